@@ -1,0 +1,53 @@
+// ShapeSplines math core: the one curve interface every spline family implements.
+#ifndef shapesplines_Curve_h
+#define shapesplines_Curve_h
+
+#include <Eigen/Core>
+#include <Eigen/Geometry> // cross products
+
+#include <array>
+#include <vector>
+
+namespace shapesplines
+{
+using Vec3 = Eigen::Vector3d;
+
+/// Position and derivatives 0..MaxDerivativeOrder at one parameter value.
+constexpr int MaxDerivativeOrder = 4;
+using Derivatives = std::array<Vec3, MaxDerivativeOrder + 1>;
+
+/**
+ * A piecewise curve s(t) on knots t_0 < t_1 < ... < t_n (n spans). Families
+ * implement evaluateOnSpan(); everything else (span search, sampling, frames,
+ * curvature, torsion, shape audit) is written once against this interface.
+ * A closed curve has s(t_0) = s(t_n) and its parameter wraps around.
+ */
+class Curve
+{
+public:
+  virtual ~Curve() = default;
+
+  const std::vector<double>& knots() const { return Knots; }
+  int numberOfSpans() const { return static_cast<int>(Knots.size()) - 1; }
+  bool isClosed() const { return Closed; }
+  double firstParameter() const { return Knots.front(); }
+  double lastParameter() const { return Knots.back(); }
+
+  /// Span containing t (binary search; t outside the knots clamps to the end spans).
+  int findSpan(double t) const;
+
+  /// Derivatives 0..order (order <= MaxDerivativeOrder) at t; entries above order are zero.
+  Derivatives evaluate(double t, int order = MaxDerivativeOrder) const;
+
+  /// Same, with the span already known (t may lie on either end of it).
+  virtual Derivatives evaluateOnSpan(int span, double t, int order) const = 0;
+
+protected:
+  Curve(std::vector<double> knots, bool closed);
+
+  std::vector<double> Knots;
+  bool Closed = false;
+};
+} // namespace shapesplines
+
+#endif

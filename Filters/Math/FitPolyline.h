@@ -1,0 +1,59 @@
+// ShapeSplines math core: the path from raw polyline points to a sampled,
+// framed and audited curve, shared by every spline family.
+#ifndef shapesplines_FitPolyline_h
+#define shapesplines_FitPolyline_h
+
+#include "Curve.h"
+#include "FrenetFrame.h"
+#include "Parameterization.h"
+#include "Sampler.h"
+#include "ShapeAnalysis.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace shapesplines
+{
+struct FitOptions
+{
+  Parameterization Knots = Parameterization::ChordLength;
+  bool Closed = false; ///< close the line even if its last point is not its first
+  SamplingOptions Sampling;
+  ShapeTolerances Tolerances;
+  /// Samples per span of the shape audit, independent of the output sampling.
+  int AuditSubdivisions = 16;
+};
+
+/// Builds a family's curve through the cleaned data (at least three points).
+using CurveBuilder =
+  std::function<std::unique_ptr<Curve>(const CleanPolyline& data, const std::vector<double>& knots)>;
+
+struct FittedPolyline
+{
+  CleanPolyline Data;
+  std::vector<double> Knots;
+  std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
+  CurveSamples Samples;
+  std::vector<FrenetFrame> Frames;
+  DiscreteShape Shape;
+  ShapeAudit Audit;
+};
+
+/// Samples, frames and audits a curve; written once for every family.
+void sampleAndAudit(FittedPolyline& fit, const FitOptions& options);
+
+/// Audits a curve through data on a uniform sampling (for automatic tension loops).
+ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
+  const ShapeTolerances& tolerances, int subdivisions);
+
+/**
+ * Cleans the points, computes knots, builds the curve (two distinct points
+ * give the straight segment whatever the family), samples it, computes frames
+ * and audits its shape. Throws std::invalid_argument for non-finite points.
+ */
+FittedPolyline fitPolyline(
+  const std::vector<Vec3>& points, const FitOptions& options, const CurveBuilder& build);
+} // namespace shapesplines
+
+#endif

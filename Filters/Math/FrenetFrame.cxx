@@ -1,0 +1,102 @@
+#include "FrenetFrame.h"
+
+#include <cmath>
+
+namespace shapesplines
+{
+namespace
+{
+/// A unit vector orthogonal to unit t, from the coordinate axis least aligned with it.
+Vec3 anyNormal(const Vec3& t)
+{
+  int axis = 0;
+  t.cwiseAbs().minCoeff(&axis);
+  Vec3 n = Vec3::Unit(axis) - t[axis] * t;
+  return n.normalized();
+}
+
+/// Transports a normal to a new tangent: remove its tangential part.
+Vec3 transport(const Vec3& normal, const Vec3& tangent)
+{
+  const Vec3 n = normal - normal.dot(tangent) * tangent;
+  const double length = n.norm();
+  return length > 1e-8 ? Vec3(n / length) : anyNormal(tangent);
+}
+} // namespace
+
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double lengthScale)
+{
+  const int n = static_cast<int>(samples.size());
+  std::vector<FrenetFrame> frames(n);
+  std::vector<bool> defined(n, false);
+  const double flat = FlatCurvature / (lengthScale > 0 ? lengthScale : 1.0);
+
+  Vec3 lastTangent = Vec3::UnitX();
+  for (int k = 0; k < n; ++k)
+  {
+    const Vec3& d1 = samples[k][1];
+    const Vec3& d2 = samples[k][2];
+    const Vec3& d3 = samples[k][3];
+    FrenetFrame& f = frames[k];
+    const double speed = d1.norm();
+    // A stationary point (s' = 0) keeps the direction of s'', or the last tangent.
+    if (speed > 0)
+    {
+      f.Tangent = d1 / speed;
+    }
+    else if (d2.norm() > 0)
+    {
+      f.Tangent = d2.normalized();
+    }
+    else
+    {
+      f.Tangent = lastTangent;
+    }
+    lastTangent = f.Tangent;
+    const Vec3 cross = d1.cross(d2);
+    const double crossNorm = cross.norm();
+    const double curvature = speed > 0 ? crossNorm / (speed * speed * speed) : 0.0;
+    if (std::isfinite(curvature) && curvature > flat)
+    {
+      f.Curvature = curvature;
+      f.Binormal = cross / crossNorm;
+      f.Normal = f.Binormal.cross(f.Tangent);
+      f.Torsion = d1.dot(d2.cross(d3)) / (crossNorm * crossNorm);
+      defined[k] = true;
+    }
+  }
+
+  // Fill flat samples by transporting the nearest defined normal along the curve:
+  // forwards from the first defined sample, then backwards before it.
+  int first = 0;
+  while (first < n && !defined[first])
+  {
+    ++first;
+  }
+  Vec3 normal = first < n ? frames[first].Normal : anyNormal(frames.empty() ? Vec3::UnitX() : frames[0].Tangent);
+  auto fill = [&](int k) {
+    if (defined[k])
+    {
+      normal = frames[k].Normal;
+      return;
+    }
+    FrenetFrame& f = frames[k];
+    f.Normal = transport(normal, f.Tangent);
+    f.Binormal = f.Tangent.cross(f.Normal);
+    normal = f.Normal;
+  };
+  for (int k = (first < n ? first : 0); k < n; ++k)
+  {
+    fill(k);
+  }
+  if (first < n)
+  {
+    normal = frames[first].Normal;
+    for (int k = first - 1; k >= 0; --k)
+    {
+      fill(k);
+    }
+  }
+  return frames;
+}
+} // namespace shapesplines

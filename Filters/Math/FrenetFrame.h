@@ -1,0 +1,35 @@
+// ShapeSplines math core: curvature, torsion and the Frenet frame, written once.
+#ifndef shapesplines_FrenetFrame_h
+#define shapesplines_FrenetFrame_h
+
+#include "Curve.h"
+
+#include <vector>
+
+namespace shapesplines
+{
+struct FrenetFrame
+{
+  Vec3 Tangent = Vec3::UnitX();
+  Vec3 Normal = Vec3::UnitY();
+  Vec3 Binormal = Vec3::UnitZ();
+  double Curvature = 0.0; ///< |s' x s''| / |s'|^3
+  double Torsion = 0.0;   ///< det(s', s'', s''') / |s' x s''|^2, signed
+};
+
+/**
+ * Curvature below FlatCurvature / lengthScale counts as zero: there the
+ * torsion is 0 and the normal is carried by parallel transport from the
+ * nearest sample where it is defined, so frames stay continuous and finite.
+ */
+constexpr double FlatCurvature = 1e-10;
+
+/**
+ * Frenet frames along a sequence of samples (derivatives 1..3 used).
+ * lengthScale (e.g. the data's bounding-box diagonal) makes the flatness test
+ * independent of units.
+ */
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double lengthScale);
+} // namespace shapesplines
+
+#endif

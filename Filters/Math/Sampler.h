@@ -1,0 +1,47 @@
+// ShapeSplines math core: sampling a curve, written once for every family.
+#ifndef shapesplines_Sampler_h
+#define shapesplines_Sampler_h
+
+#include "Curve.h"
+
+#include <vector>
+
+namespace shapesplines
+{
+struct SamplingOptions
+{
+  enum class Mode
+  {
+    Subdivisions, ///< the same number of samples on every span
+    ArcLength     ///< samples about TargetLength apart along the curve
+  };
+  Mode SampleMode = Mode::Subdivisions;
+  int Subdivisions = 10;
+  double TargetLength = 1.0;
+  /// Upper bound on samples per curve; the arc-length spacing grows to respect it.
+  long MaximumSamples = 10000000;
+};
+
+/**
+ * Samples of a curve: every knot is a sample, the samples of span j start at
+ * its knot t_j, and a closed curve does not repeat its seam point.
+ */
+struct CurveSamples
+{
+  std::vector<double> Parameter;
+  std::vector<int> Span;
+  std::vector<Derivatives> Values; ///< position and derivatives 1..3 (4th left zero)
+  std::vector<double> ArcLength;   ///< from the first sample, by Gauss-Legendre quadrature
+  double Length = 0.0;             ///< whole curve, including a closed curve's seam span
+  bool LengthIncreased = false;    ///< the spacing was widened to respect MaximumSamples
+
+  int size() const { return static_cast<int>(this->Parameter.size()); }
+};
+
+/// Arc length of curve between parameters a <= b inside one span (Gauss-Legendre).
+double arcLength(const Curve& curve, int span, double a, double b);
+
+CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options);
+} // namespace shapesplines
+
+#endif

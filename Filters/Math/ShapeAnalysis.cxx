@@ -1,0 +1,217 @@
+#include "ShapeAnalysis.h"
+
+#include <set>
+#include <utility>
+
+namespace shapesplines
+{
+namespace
+{
+double sign(double x)
+{
+  return (x > 0) - (x < 0);
+}
+} // namespace
+
+const char* shapeCriterionName(ShapeCriterion criterion)
+{
+  switch (criterion)
+  {
+    case ShapeCriterion::Collinearity:
+      return "collinearity";
+    case ShapeCriterion::ConvexityAtKnot:
+      return "convexity at knot";
+    case ShapeCriterion::ConvexityOnSpan:
+      return "convexity on span";
+    case ShapeCriterion::Coplanarity:
+      return "coplanarity";
+    case ShapeCriterion::TorsionSignAtKnot:
+      return "torsion sign at knot";
+    case ShapeCriterion::TorsionSignOnSpan:
+      return "torsion sign on span";
+    default:
+      return "unknown";
+  }
+}
+
+DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances)
+{
+  const int n = static_cast<int>(data.Points.size());
+  const int spans = data.numberOfSpans();
+  DiscreteShape shape;
+  shape.Binormal.assign(n, Vec3::Zero());
+  shape.Curvature.assign(n, 0.0);
+  shape.Collinear.assign(n, 0);
+  shape.Convex.assign(n, 0);
+  shape.Torsion.assign(std::max(spans, 0), 0.0);
+  shape.Coplanar.assign(std::max(spans, 0), 0);
+  shape.Twisted.assign(std::max(spans, 0), 0);
+  auto interior = [&](int i) { return data.Closed || (i > 0 && i < n - 1); };
+
+  for (int i = 0; i < n; ++i)
+  {
+    if (!interior(i))
+    {
+      continue;
+    }
+    const Vec3 before = data.segment((i - 1 + n) % n);
+    const Vec3 after = data.segment(i);
+    const double lengths = before.norm() * after.norm();
+    if (!(lengths > 0))
+    {
+      continue;
+    }
+    shape.Binormal[i] = before.cross(after) / lengths;
+    // Menger curvature: 1 / radius of the circle through the three points.
+    shape.Curvature[i] = 2.0 * shape.Binormal[i].norm() / (before + after).norm();
+    const bool straight = shape.Binormal[i].norm() <= tolerances.Data;
+    shape.Collinear[i] = straight && before.dot(after) > 0;
+    shape.Convex[i] = !straight;
+  }
+  for (int i = 0; i < spans; ++i)
+  {
+    const int next = (i + 1) % n;
+    if (!interior(i) || !interior(next))
+    {
+      continue;
+    }
+    const Vec3 a = data.segment((i - 1 + n) % n);
+    const Vec3 b = data.segment(i);
+    const Vec3 c = data.segment(next);
+    const double triple = a.dot(b.cross(c));
+    const double crosses = a.cross(b).norm() * b.cross(c).norm();
+    const double scaleFree = triple / (a.norm() * b.norm() * c.norm());
+    const bool flat = std::abs(scaleFree) <= tolerances.Data || !(crosses > 0);
+    shape.Torsion[i] = flat ? 0.0 : triple / crosses;
+    shape.Coplanar[i] = flat;
+    shape.Twisted[i] = !flat;
+  }
+  return shape;
+}
+
+void markKnots(std::vector<AuditSample>& samples, bool closed)
+{
+  for (size_t k = 0; k < samples.size(); ++k)
+  {
+    const bool startsSpan = k == 0 || samples[k].Span != samples[k - 1].Span;
+    samples[k].Knot = startsSpan ? samples[k].Span : -1;
+  }
+  if (!closed && samples.size() > 1)
+  {
+    samples.back().Knot = samples.back().Span + 1;
+  }
+}
+
+int ShapeAudit::violations() const
+{
+  int total = 0;
+  for (const int count : this->Failures)
+  {
+    total += count;
+  }
+  return total;
+}
+
+ShapeAudit auditShape(const CleanPolyline& data, const DiscreteShape& shape,
+  const std::vector<AuditSample>& samples, const ShapeTolerances& tolerances)
+{
+  const int n = static_cast<int>(data.Points.size());
+  const int spans = data.numberOfSpans();
+  const double diagonal = boundingBoxDiagonal(data.Points);
+  const double scale = diagonal > 0 ? diagonal : 1.0;
+  ShapeAudit audit;
+  audit.SpanMask.assign(std::max(spans, 0), 0u);
+  std::set<std::pair<int, int>> failed; // (criterion, knot or span)
+
+  auto fail = [&](ShapeCriterion criterion, int where, int span) {
+    failed.emplace(static_cast<int>(criterion), where);
+    if (span >= 0 && span < spans)
+    {
+      audit.SpanMask[span] |= 1u << static_cast<int>(criterion);
+    }
+  };
+  auto signedCurvature = [&](const FrenetFrame& f, int point) {
+    return f.Curvature * f.Binormal.dot(shape.Binormal[point].normalized()) * scale;
+  };
+  auto unit = [](const Vec3& v) -> Vec3 { return v.normalized(); };
+
+  for (const AuditSample& s : samples)
+  {
+    const int j = s.Span;
+    if (j < 0 || j >= spans)
+    {
+      continue;
+    }
+    const int next = (j + 1) % n;
+    const FrenetFrame& f = s.Frame;
+    const bool inside = s.Knot < 0;
+
+    // (i) collinearity: at I_i and inside the spans on both sides of it.
+    for (const int i : { j, next })
+    {
+      const bool onOwnKnot = s.Knot == i;
+      if (shape.Collinear[i] && (inside || onOwnKnot))
+      {
+        const Vec3 direction = unit(data.segment(i));
+        if (f.Tangent.cross(direction).norm() > tolerances.Curve)
+        {
+          fail(ShapeCriterion::Collinearity, i, j);
+        }
+      }
+    }
+
+    // (iii) coplanarity: the osculating plane is the data plane, on the closed span.
+    if (shape.Coplanar[j] && f.Curvature > 0)
+    {
+      const int planeAt = shape.Convex[j] ? j : (shape.Convex[next] ? next : -1);
+      if (planeAt >= 0 &&
+        f.Binormal.cross(unit(shape.Binormal[planeAt])).norm() > tolerances.Curve)
+      {
+        fail(ShapeCriterion::Coplanarity, j, j);
+      }
+    }
+
+    if (s.Knot >= 0)
+    {
+      const int i = s.Knot % n;
+      const int before = (i - 1 + spans) % spans;
+      const int after = i % spans;
+      const int spanBefore = data.Closed || i > 0 ? before : -1;
+      const int spanAfter = data.Closed || i < n - 1 ? after : -1;
+      // (ii.1) convexity at the knot.
+      if (shape.Convex[i] && signedCurvature(f, i) < -tolerances.Curve)
+      {
+        fail(ShapeCriterion::ConvexityAtKnot, i, spanBefore);
+        fail(ShapeCriterion::ConvexityAtKnot, i, spanAfter);
+      }
+      // (iv.1) torsion sign at the knot where both neighbouring segments agree.
+      if (spanBefore >= 0 && spanAfter >= 0 && shape.Twisted[spanBefore] &&
+        shape.Twisted[spanAfter] && shape.Torsion[spanBefore] * shape.Torsion[spanAfter] > 0 &&
+        f.Torsion * sign(shape.Torsion[spanAfter]) * scale < -tolerances.Curve)
+      {
+        fail(ShapeCriterion::TorsionSignAtKnot, i, spanBefore);
+        fail(ShapeCriterion::TorsionSignAtKnot, i, spanAfter);
+      }
+      continue;
+    }
+
+    // (ii.2) convexity inside a span whose end binormals agree.
+    if (shape.Convex[j] && shape.Convex[next] &&
+      shape.Binormal[j].dot(shape.Binormal[next]) > 0 &&
+      (signedCurvature(f, j) < -tolerances.Curve || signedCurvature(f, next) < -tolerances.Curve))
+    {
+      fail(ShapeCriterion::ConvexityOnSpan, j, j);
+    }
+    // (iv.2) torsion sign inside a twisted span.
+    if (shape.Twisted[j] && f.Torsion * sign(shape.Torsion[j]) * scale < -tolerances.Curve)
+    {
+      fail(ShapeCriterion::TorsionSignOnSpan, j, j);
+    }
+  }
+  for (const auto& [criterion, where] : failed)
+  {
+    ++audit.Failures[criterion];
+  }
+  return audit;
+}
+} // namespace shapesplines

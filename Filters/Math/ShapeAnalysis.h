@@ -1,0 +1,89 @@
+// ShapeSplines math core: the discrete shape of a polyline and the shape audit
+// of a curve against it (paper 001, section 4, Definition 1).
+#ifndef shapesplines_ShapeAnalysis_h
+#define shapesplines_ShapeAnalysis_h
+
+#include "FrenetFrame.h"
+#include "Parameterization.h"
+
+#include <array>
+#include <vector>
+
+namespace shapesplines
+{
+struct ShapeTolerances
+{
+  /// epsilon_1: |B_i| and the normalised triple product below this count as zero
+  /// (collinear points, coplanar segments).
+  double Data = 1e-6;
+  /// epsilon_2: allowed sine of the angle between the curve's tangent (binormal)
+  /// and the data's segment (binormal); and how far a scale-free signed curvature
+  /// K.B_i * diagonal or torsion tau * Delta_i-sign * diagonal may fall below zero.
+  double Curve = 1e-3;
+};
+
+/**
+ * Discrete shape of the data polygon I_0..I_m (closed lines wrap around).
+ * Per point: binormal B_i, Menger curvature, collinearity flag. Per segment
+ * L_i = I_{i+1} - I_i: the signed discrete torsion Delta_i and a coplanarity flag.
+ * Entries that the definition leaves undefined (ends of open lines) are zero.
+ */
+struct DiscreteShape
+{
+  std::vector<Vec3> Binormal;
+  std::vector<double> Curvature;
+  std::vector<char> Collinear; ///< criterion (i) applies at this point
+  std::vector<char> Convex;    ///< B_i != 0: criterion (ii.1) applies
+  std::vector<double> Torsion; ///< per segment
+  std::vector<char> Coplanar;  ///< per segment: criterion (iii) applies
+  std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies
+};
+
+DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {});
+
+enum class ShapeCriterion : int
+{
+  Collinearity = 0,   ///< (i)
+  ConvexityAtKnot,    ///< (ii.1)
+  ConvexityOnSpan,    ///< (ii.2)
+  Coplanarity,        ///< (iii)
+  TorsionSignAtKnot,  ///< (iv.1)
+  TorsionSignOnSpan,  ///< (iv.2)
+  Count
+};
+const char* shapeCriterionName(ShapeCriterion criterion);
+
+/// What the audit needs of one curve sample.
+struct AuditSample
+{
+  int Span = 0;
+  int Knot = -1; ///< index of the data point this sample sits on, or -1
+  FrenetFrame Frame;
+};
+
+/// Marks the knots of samples ordered along a curve: the first sample of each
+/// span, and the last sample of an open curve.
+void markKnots(std::vector<AuditSample>& samples, bool closed);
+
+struct ShapeAudit
+{
+  /// Per span: bit c set if criterion c fails on the span or at one of its knots.
+  std::vector<unsigned> SpanMask;
+  /// Distinct failures per criterion (a knot or a span counts once).
+  std::array<int, static_cast<int>(ShapeCriterion::Count)> Failures{};
+
+  int violations() const;
+  bool preserving() const { return this->violations() == 0; }
+};
+
+/**
+ * Audits a curve, given by its samples, against the discrete shape of its
+ * data: which criteria of Definition 1 fail on which span. Sign conditions
+ * fail only when the signed value drops below -tolerances.Curve (scaled by
+ * the data's bounding-box diagonal); a vanishing value is not a sign change.
+ */
+ShapeAudit auditShape(const CleanPolyline& data, const DiscreteShape& shape,
+  const std::vector<AuditSample>& samples, const ShapeTolerances& tolerances = {});
+} // namespace shapesplines
+
+#endif

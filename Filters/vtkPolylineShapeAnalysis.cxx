@@ -1,0 +1,268 @@
+#include "vtkPolylineShapeAnalysis.h"
+
+#include "ShapeAnalysis.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <array>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkPolylineShapeAnalysis);
+
+namespace
+{
+using shapesplines::Vec3;
+
+std::vector<std::vector<vtkIdType>> LinesOf(vtkPolyData* polyData)
+{
+  std::vector<std::vector<vtkIdType>> lines;
+  auto it = vtk::TakeSmartPointer(polyData->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    it->GetCurrentCell(npts, ids);
+    lines.emplace_back(ids, ids + npts);
+  }
+  return lines;
+}
+
+template <typename Array>
+vtkSmartPointer<Array> NewZeroArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<Array>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  array->Fill(0);
+  return array;
+}
+
+Vec3 TupleOf(vtkDataArray* array, vtkIdType id)
+{
+  Vec3 v;
+  array->GetTuple(id, v.data());
+  return v;
+}
+
+/// The curve's samples of one line, for the audit; empty if arrays are missing.
+std::vector<shapesplines::AuditSample> CurveSamples(
+  vtkPolyData* curve, const std::vector<vtkIdType>& ids, bool& closed)
+{
+  vtkPointData* pd = curve->GetPointData();
+  vtkDataArray* span = pd->GetArray("SpanIndex");
+  vtkDataArray* tangent = pd->GetArray("Tangent");
+  vtkDataArray* binormal = pd->GetArray("Binormal");
+  vtkDataArray* curvature = pd->GetArray("Curvature");
+  vtkDataArray* torsion = pd->GetArray("Torsion");
+  std::vector<shapesplines::AuditSample> samples;
+  if (!span || !tangent || !binormal || !curvature || !torsion)
+  {
+    return samples;
+  }
+  closed = ids.size() > 1 && ids.front() == ids.back();
+  const size_t count = closed ? ids.size() - 1 : ids.size();
+  for (size_t k = 0; k < count; ++k)
+  {
+    shapesplines::AuditSample s;
+    s.Span = static_cast<int>(span->GetTuple1(ids[k]));
+    s.Frame.Tangent = TupleOf(tangent, ids[k]);
+    s.Frame.Binormal = TupleOf(binormal, ids[k]);
+    s.Frame.Curvature = curvature->GetTuple1(ids[k]);
+    s.Frame.Torsion = torsion->GetTuple1(ids[k]);
+    samples.push_back(s);
+  }
+  shapesplines::markKnots(samples, closed);
+  return samples;
+}
+} // namespace
+
+vtkPolylineShapeAnalysis::vtkPolylineShapeAnalysis()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkPolylineShapeAnalysis::~vtkPolylineShapeAnalysis() = default;
+
+int vtkPolylineShapeAnalysis::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkPolylineShapeAnalysis::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* curve = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output poly data.");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  const vtkIdType nPoints = input->GetNumberOfPoints();
+  auto curvature = NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, nPoints);
+  auto torsion = NewZeroArray<vtkDoubleArray>("DiscreteTorsion", 1, nPoints);
+  auto binormal = NewZeroArray<vtkDoubleArray>("DiscreteBinormal", 3, nPoints);
+  auto collinear = NewZeroArray<vtkUnsignedCharArray>("Collinear", 1, nPoints);
+  auto convex = NewZeroArray<vtkUnsignedCharArray>("Convex", 1, nPoints);
+  auto coplanar = NewZeroArray<vtkUnsignedCharArray>("Coplanar", 1, nPoints);
+  if (input->GetNumberOfLines() == 0)
+  {
+    vtkWarningMacro("Input has no lines: nothing to analyse.");
+  }
+
+  const auto lines = LinesOf(input);
+  const auto curves = curve ? LinesOf(curve) : std::vector<std::vector<vtkIdType>>{};
+  if (curve && curves.size() != lines.size())
+  {
+    vtkWarningMacro("The curve input has " << curves.size() << " lines for " << lines.size()
+                                           << " data lines: lines past the shorter are not audited.");
+  }
+  const bool audit = curve != nullptr;
+  auto mask = NewZeroArray<vtkIntArray>("ViolationMask", 1, nPoints);
+  auto total = NewZeroArray<vtkIntArray>("ShapeViolations", 1, 0);
+  auto preserving = NewZeroArray<vtkUnsignedCharArray>("ShapePreserving", 1, 0);
+  constexpr int criteria = static_cast<int>(shapesplines::ShapeCriterion::Count);
+  std::array<vtkSmartPointer<vtkIntArray>, criteria> counts;
+  const std::array<const char*, criteria> countNames = { "CollinearityViolations",
+    "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",
+    "TorsionSignAtKnotViolations", "TorsionSignOnSpanViolations" };
+  for (int c = 0; c < criteria; ++c)
+  {
+    counts[c] = NewZeroArray<vtkIntArray>(countNames[c], 1, 0);
+  }
+
+  shapesplines::ShapeTolerances tolerances;
+  tolerances.Data = this->DataShapeTolerance;
+  tolerances.Curve = this->CurveShapeTolerance;
+  for (size_t l = 0; l < lines.size(); ++l)
+  {
+    const auto& ids = lines[l];
+    std::vector<Vec3> points(ids.size());
+    bool finite = true;
+    for (size_t i = 0; i < ids.size(); ++i)
+    {
+      input->GetPoint(ids[i], points[i].data());
+      finite = finite && points[i].allFinite();
+    }
+    const vtkIdType cellId = input->GetNumberOfVerts() + static_cast<vtkIdType>(l);
+    if (!finite)
+    {
+      vtkErrorMacro("Line (cell " << cellId << ") skipped: a point is not finite.");
+    }
+    const auto data = shapesplines::cleanPolyline(points, this->Closed);
+    const auto shape = shapesplines::discreteShape(data, tolerances);
+    // Dropped repeats take the values of the point they repeat.
+    for (size_t i = 0, kept = 0; finite && i < ids.size(); ++i)
+    {
+      while (kept + 1 < data.SourceIndex.size() && data.SourceIndex[kept + 1] <= static_cast<int>(i))
+      {
+        ++kept;
+      }
+      if (data.SourceIndex.empty())
+      {
+        break;
+      }
+      curvature->SetValue(ids[i], shape.Curvature[kept]);
+      binormal->SetTuple(ids[i], shape.Binormal[kept].data());
+      collinear->SetValue(ids[i], shape.Collinear[kept]);
+      convex->SetValue(ids[i], shape.Convex[kept]);
+      if (kept < shape.Torsion.size())
+      {
+        torsion->SetValue(ids[i], shape.Torsion[kept]);
+        coplanar->SetValue(ids[i], shape.Coplanar[kept]);
+      }
+    }
+    if (!audit)
+    {
+      continue;
+    }
+    shapesplines::ShapeAudit result;
+    if (finite && l < curves.size() && data.numberOfSpans() > 0)
+    {
+      bool curveClosed = false;
+      const auto samples = CurveSamples(curve, curves[l], curveClosed);
+      if (samples.empty())
+      {
+        vtkErrorMacro("The curve input lacks SpanIndex, Tangent, Binormal, Curvature or Torsion.");
+        return 0;
+      }
+      if (samples.back().Span + 1 != data.numberOfSpans() || curveClosed != data.Closed)
+      {
+        vtkWarningMacro("Line (cell " << cellId << "): the curve has " << samples.back().Span + 1
+                                      << " spans for " << data.numberOfSpans()
+                                      << " data spans (or differs in closure): not audited.");
+      }
+      else
+      {
+        result = shapesplines::auditShape(data, shape, samples, tolerances);
+        for (size_t j = 0; j < result.SpanMask.size(); ++j)
+        {
+          mask->SetValue(ids[data.SourceIndex[j]], static_cast<int>(result.SpanMask[j]));
+        }
+      }
+    }
+    total->InsertNextValue(result.violations());
+    preserving->InsertNextValue(result.preserving() ? 1 : 0);
+    for (int c = 0; c < criteria; ++c)
+    {
+      counts[c]->InsertNextValue(result.Failures[c]);
+    }
+  }
+
+  vtkPointData* pd = output->GetPointData();
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
+         curvature, torsion, binormal, collinear, convex, coplanar })
+  {
+    pd->AddArray(a);
+  }
+  if (audit)
+  {
+    pd->AddArray(mask);
+    // Cell arrays only fit when every cell is a line.
+    if (input->GetNumberOfCells() == input->GetNumberOfLines())
+    {
+      vtkCellData* cd = output->GetCellData();
+      cd->AddArray(total);
+      cd->AddArray(preserving);
+      for (const auto& count : counts)
+      {
+        cd->AddArray(count);
+      }
+    }
+    else
+    {
+      vtkWarningMacro("Input has non-line cells: per-line audit counts are not written.");
+    }
+  }
+  return 1;
+}
+
+void vtkPolylineShapeAnalysis::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Closed: " << (this->Closed ? "On" : "Off") << "\n";
+  os << indent << "DataShapeTolerance: " << this->DataShapeTolerance << "\n";
+  os << indent << "CurveShapeTolerance: " << this->CurveShapeTolerance << "\n";
+}

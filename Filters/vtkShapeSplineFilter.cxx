@@ -1,0 +1,318 @@
+#include "vtkShapeSplineFilter.h"
+
+#include "FitPolyline.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <exception>
+#include <initializer_list>
+#include <string>
+
+namespace
+{
+using shapesplines::Vec3;
+
+/// One input line and what became of it.
+struct LineWork
+{
+  vtkIdType CellId = 0;
+  std::vector<vtkIdType> PointIds;
+  shapesplines::FittedPolyline Fit;
+  std::string Error;
+};
+
+vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(components);
+  array->SetNumberOfTuples(tuples);
+  return array;
+}
+
+template <typename Array>
+vtkSmartPointer<Array> Renamed(Array* source, const char* name)
+{
+  auto copy = vtkSmartPointer<Array>::New();
+  copy->ShallowCopy(source);
+  copy->SetName(name);
+  return copy;
+}
+} // namespace
+
+vtkShapeSplineFilter::vtkShapeSplineFilter() = default;
+vtkShapeSplineFilter::~vtkShapeSplineFilter() = default;
+
+const char* vtkShapeSplineFilter::GetParameterizationAsString()
+{
+  switch (this->Parameterization)
+  {
+    case UNIFORM:
+      return "Uniform";
+    case CENTRIPETAL:
+      return "Centripetal";
+    default:
+      return "ChordLength";
+  }
+}
+
+const char* vtkShapeSplineFilter::GetSamplingModeAsString()
+{
+  return this->SamplingMode == ARC_LENGTH ? "ArcLength" : "Subdivisions";
+}
+
+int vtkShapeSplineFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output poly data.");
+    return 0;
+  }
+  if (input->GetNumberOfPoints() == 0 || input->GetNumberOfLines() == 0)
+  {
+    vtkWarningMacro("Input has no lines: the output is empty.");
+    return 1;
+  }
+  const vtkIdType otherCells = input->GetNumberOfCells() - input->GetNumberOfLines();
+  if (otherCells > 0)
+  {
+    vtkWarningMacro(<< otherCells << " non-line cells (vertices, polygons, strips) ignored.");
+  }
+
+  // Gather the lines serially; fit them in parallel; assemble serially.
+  std::vector<LineWork> lines(input->GetNumberOfLines());
+  {
+    const vtkIdType firstLineId = input->GetNumberOfVerts();
+    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+    vtkIdType k = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+    {
+      vtkIdType npts;
+      const vtkIdType* ids;
+      it->GetCurrentCell(npts, ids);
+      lines[k].CellId = firstLineId + k;
+      lines[k].PointIds.assign(ids, ids + npts);
+    }
+  }
+
+  shapesplines::FitOptions options;
+  options.Knots = static_cast<shapesplines::Parameterization>(this->Parameterization);
+  options.Closed = this->Closed;
+  options.Sampling.SampleMode = this->SamplingMode == ARC_LENGTH
+    ? shapesplines::SamplingOptions::Mode::ArcLength
+    : shapesplines::SamplingOptions::Mode::Subdivisions;
+  options.Sampling.Subdivisions = this->NumberOfSubdivisions;
+  options.Sampling.TargetLength = this->SampleLength;
+  options.Tolerances.Data = this->DataShapeTolerance;
+  options.Tolerances.Curve = this->CurveShapeTolerance;
+  const shapesplines::CurveBuilder build = [this](const shapesplines::CleanPolyline& data,
+                                             const std::vector<double>& knots) {
+    return this->BuildCurve(data, knots);
+  };
+
+  vtkPoints* inPoints = input->GetPoints();
+  vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
+    {
+      LineWork& line = lines[k];
+      std::vector<Vec3> points(line.PointIds.size());
+      for (size_t i = 0; i < points.size(); ++i)
+      {
+        inPoints->GetPoint(line.PointIds[i], points[i].data());
+      }
+      try
+      {
+        line.Fit = shapesplines::fitPolyline(points, options, build);
+      }
+      catch (const std::exception& e)
+      {
+        line.Error = e.what();
+      }
+    }
+  });
+  this->UpdateProgress(0.8);
+
+  vtkIdType outputSize = 0;
+  for (LineWork& line : lines)
+  {
+    if (!line.Error.empty())
+    {
+      vtkErrorMacro("Line (cell " << line.CellId << ") skipped: " << line.Error << ".");
+      continue;
+    }
+    const auto& fit = line.Fit;
+    if (fit.Data.MergedPoints > 0)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId << "): " << fit.Data.MergedPoints
+                                    << " repeated point(s) merged.");
+    }
+    if (!fit.Spline)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId
+                                    << ") has fewer than two distinct points: passed through.");
+      outputSize += static_cast<vtkIdType>(line.PointIds.size());
+      continue;
+    }
+    if (fit.Data.Points.size() == 2)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId
+                                    << ") has two distinct points: output is a straight segment.");
+    }
+    if (fit.Samples.LengthIncreased)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId
+                                    << "): SampleLength too small, sample spacing widened.");
+    }
+    outputSize += fit.Samples.size();
+  }
+
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outPD->InterpolateAllocate(inPD, outputSize);
+  outCD->CopyAllocate(inCD, static_cast<vtkIdType>(lines.size()));
+
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataTypeToDouble();
+  outPoints->SetNumberOfPoints(outputSize);
+  vtkNew<vtkCellArray> outLines;
+  auto curvature = NewArray("Curvature", 1, outputSize);
+  auto torsion = NewArray("Torsion", 1, outputSize);
+  auto tangent = NewArray("Tangent", 3, outputSize);
+  auto normal = NewArray("Normal", 3, outputSize);
+  auto binormal = NewArray("Binormal", 3, outputSize);
+  auto parameter = NewArray("Parameter", 1, outputSize);
+  auto arcLength = NewArray("ArcLength", 1, outputSize);
+  vtkNew<vtkIntArray> spanIndex;
+  spanIndex->SetName("SpanIndex");
+  spanIndex->SetNumberOfTuples(outputSize);
+  vtkNew<vtkUnsignedCharArray> preserving;
+  preserving->SetName("ShapePreserving");
+  vtkNew<vtkIntArray> violations;
+  violations->SetName("ShapeViolations");
+  auto length = NewArray("Length", 1, 0);
+  auto tortuosity = NewArray("Tortuosity", 1, 0);
+
+  vtkIdType next = 0;
+  std::vector<vtkIdType> cell;
+  for (size_t k = 0; k < lines.size(); ++k)
+  {
+    const LineWork& line = lines[k];
+    if (!line.Error.empty())
+    {
+      continue;
+    }
+    const auto& fit = line.Fit;
+    cell.clear();
+    if (!fit.Spline)
+    {
+      for (const vtkIdType id : line.PointIds)
+      {
+        outPoints->SetPoint(next, input->GetPoint(id));
+        outPD->CopyData(inPD, id, next);
+        const double zero[3] = { 0, 0, 0 };
+        for (vtkDoubleArray* a : std::initializer_list<vtkDoubleArray*>{
+               curvature, torsion, tangent, normal, binormal, parameter, arcLength })
+        {
+          a->SetTuple(next, zero);
+        }
+        spanIndex->SetValue(next, 0);
+        cell.push_back(next++);
+      }
+    }
+    else
+    {
+      const auto& samples = fit.Samples;
+      const int knotCount = static_cast<int>(fit.Data.Points.size());
+      for (int s = 0; s < samples.size(); ++s)
+      {
+        const int span = samples.Span[s];
+        const double t0 = fit.Knots[span];
+        const double fraction = (samples.Parameter[s] - t0) / (fit.Knots[span + 1] - t0);
+        const vtkIdType from = line.PointIds[fit.Data.SourceIndex[span]];
+        const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
+        outPD->InterpolateEdge(inPD, next, from, to, fraction);
+        outPoints->SetPoint(next, samples.Values[s][0].data());
+        const auto& frame = fit.Frames[s];
+        curvature->SetValue(next, frame.Curvature);
+        torsion->SetValue(next, frame.Torsion);
+        tangent->SetTuple(next, frame.Tangent.data());
+        normal->SetTuple(next, frame.Normal.data());
+        binormal->SetTuple(next, frame.Binormal.data());
+        parameter->SetValue(next, samples.Parameter[s]);
+        arcLength->SetValue(next, samples.ArcLength[s]);
+        spanIndex->SetValue(next, span);
+        cell.push_back(next++);
+      }
+      if (fit.Data.Closed)
+      {
+        cell.push_back(cell.front());
+      }
+    }
+    const vtkIdType outCell = outLines->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+    outCD->CopyData(inCD, line.CellId, outCell);
+    const int count = fit.Spline ? fit.Audit.violations() : 0;
+    preserving->InsertNextValue(count == 0 ? 1 : 0);
+    violations->InsertNextValue(count);
+    const double total = fit.Spline ? fit.Samples.Length : 0.0;
+    const double span =
+      fit.Data.Closed || fit.Data.Points.size() < 2 ? 0.0 : (fit.Data.Points.back() - fit.Data.Points.front()).norm();
+    length->InsertNextValue(total);
+    tortuosity->InsertNextValue(span > 0 ? total / span : 0.0);
+    if (k % 1000 == 0)
+    {
+      this->UpdateProgress(0.8 + 0.2 * static_cast<double>(k) / lines.size());
+    }
+  }
+
+  output->SetPoints(outPoints);
+  output->SetLines(outLines);
+  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ curvature, torsion,
+         tangent, normal, binormal, parameter, arcLength, spanIndex })
+  {
+    outPD->AddArray(a);
+  }
+  outPD->SetActiveScalars("Torsion");
+  outPD->SetActiveNormals("Normal");
+  if (this->VMTKArrayNames)
+  {
+    outPD->AddArray(Renamed(tangent.Get(), "FrenetTangent"));
+    outPD->AddArray(Renamed(normal.Get(), "FrenetNormal"));
+    outPD->AddArray(Renamed(binormal.Get(), "FrenetBinormal"));
+  }
+  for (vtkAbstractArray* a :
+    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity })
+  {
+    outCD->AddArray(a);
+  }
+  return 1;
+}
+
+void vtkShapeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Parameterization: " << this->GetParameterizationAsString() << "\n";
+  os << indent << "Closed: " << (this->Closed ? "On" : "Off") << "\n";
+  os << indent << "SamplingMode: " << this->GetSamplingModeAsString() << "\n";
+  os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
+  os << indent << "SampleLength: " << this->SampleLength << "\n";
+  os << indent << "DataShapeTolerance: " << this->DataShapeTolerance << "\n";
+  os << indent << "CurveShapeTolerance: " << this->CurveShapeTolerance << "\n";
+  os << indent << "VMTKArrayNames: " << (this->VMTKArrayNames ? "On" : "Off") << "\n";
+}

@@ -1,0 +1,186 @@
+/**
+ * @class   vtkShapeSplineFilter
+ * @brief   abstract base of the ShapeSplines curve filters: polylines in, sampled
+ *          spline curves with Frenet frame, curvature, torsion and shape audit out
+ *
+ * vtkShapeSplineFilter does the VTK plumbing every spline family shares; a
+ * subclass only builds its curve through the cleaned points of one line
+ * (BuildCurve). For each polyline (or line) cell of the input it:
+ * - merges consecutive repeated points (a warning says how many),
+ * - closes the line if its last point repeats its first, or if Closed is on,
+ * - computes the knots (Parameterization), builds the spline, samples it
+ *   (NumberOfSubdivisions per span, or about SampleLength apart; the data
+ *   points are always among the samples; a closed curve does not repeat its
+ *   seam point, its cell does),
+ * - computes the unit Frenet frame, curvature and signed torsion from the
+ *   spline's exact derivatives, and audits the curve against the discrete
+ *   shape of the data (paper 001, Definition 1).
+ *
+ * Output point arrays: Curvature, Torsion, Tangent, Normal, Binormal,
+ * Parameter, ArcLength, SpanIndex, and the input point arrays interpolated
+ * along each span. Output cell arrays: ShapePreserving, ShapeViolations,
+ * Length, Tortuosity (length / end-to-end distance, 0 for closed lines), and
+ * the input cell arrays. With VMTKArrayNames on, the frame is also written as
+ * FrenetTangent, FrenetNormal and FrenetBinormal.
+ *
+ * Lines with one distinct point are passed through unchanged (zero frame) and
+ * lines with two distinct points become straight segments, each with a
+ * warning; lines with NaN or Inf coordinates are skipped with an error naming
+ * the cell; vertices, polygons and strips are ignored with a warning. The
+ * input is never modified. Lines are processed in parallel with vtkSMPTools.
+ *
+ * @sa vtkCubicSplineFilter vtkPolylineShapeAnalysis vtkSplineFilter
+ */
+#ifndef vtkShapeSplineFilter_h
+#define vtkShapeSplineFilter_h
+
+#include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#ifndef __VTK_WRAP__
+#include <memory> // for std::unique_ptr
+#include <vector> // for std::vector
+namespace shapesplines
+{
+class Curve;
+struct CleanPolyline;
+}
+#endif
+
+class SHAPESPLINESFILTERS_EXPORT vtkShapeSplineFilter : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkShapeSplineFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ParameterizationType
+  {
+    UNIFORM = 0,
+    CHORD_LENGTH = 1,
+    CENTRIPETAL = 2
+  };
+
+  enum SamplingModeType
+  {
+    SUBDIVISIONS = 0,
+    ARC_LENGTH = 1
+  };
+
+  ///@{
+  /**
+   * How the knots (data parameters) are spaced: uniform, chord length
+   * (default) or centripetal (square root of the chord length).
+   */
+  vtkSetClampMacro(Parameterization, int, UNIFORM, CENTRIPETAL);
+  vtkGetMacro(Parameterization, int);
+  void SetParameterizationToUniform() { this->SetParameterization(UNIFORM); }
+  void SetParameterizationToChordLength() { this->SetParameterization(CHORD_LENGTH); }
+  void SetParameterizationToCentripetal() { this->SetParameterization(CENTRIPETAL); }
+  const char* GetParameterizationAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Close every line with at least three distinct points, even if its last
+   * point does not repeat its first (lines that repeat it are always closed).
+   * Off by default.
+   */
+  vtkSetMacro(Closed, bool);
+  vtkGetMacro(Closed, bool);
+  vtkBooleanMacro(Closed, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Sample each span with NumberOfSubdivisions samples (default), or place
+   * samples about SampleLength apart along the curve.
+   */
+  vtkSetClampMacro(SamplingMode, int, SUBDIVISIONS, ARC_LENGTH);
+  vtkGetMacro(SamplingMode, int);
+  void SetSamplingModeToSubdivisions() { this->SetSamplingMode(SUBDIVISIONS); }
+  void SetSamplingModeToArcLength() { this->SetSamplingMode(ARC_LENGTH); }
+  const char* GetSamplingModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Samples per span in SUBDIVISIONS mode (default 10).
+   */
+  vtkSetClampMacro(NumberOfSubdivisions, int, 1, 100000);
+  vtkGetMacro(NumberOfSubdivisions, int);
+  ///@}
+
+  ///@{
+  /**
+   * Target distance along the curve between samples in ARC_LENGTH mode
+   * (default 1, in the units of the input). A line never gets more than
+   * 1e7 samples: the spacing grows, with a warning, if it would.
+   */
+  vtkSetClampMacro(SampleLength, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tolerance epsilon_1 of the shape audit on the data: points whose
+   * discrete binormal is shorter (sine of the turning angle) are collinear,
+   * segments whose normalised triple product is smaller are coplanar.
+   * Default 1e-6.
+   */
+  vtkSetClampMacro(DataShapeTolerance, double, 0.0, 1.0);
+  vtkGetMacro(DataShapeTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tolerance epsilon_2 of the shape audit on the curve: the sine of the
+   * angle by which its tangent (binormal) may leave a collinear (coplanar)
+   * run, and how far its curvature and torsion, made scale-free with the
+   * bounding-box diagonal, may fall below zero where the data ask for a sign.
+   * Default 1e-3.
+   */
+  vtkSetClampMacro(CurveShapeTolerance, double, 0.0, 1.0);
+  vtkGetMacro(CurveShapeTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Also write the frame under VMTK's names FrenetTangent, FrenetNormal and
+   * FrenetBinormal, so VMTK pipelines keep working. Off by default.
+   */
+  vtkSetMacro(VMTKArrayNames, bool);
+  vtkGetMacro(VMTKArrayNames, bool);
+  vtkBooleanMacro(VMTKArrayNames, bool);
+  ///@}
+
+protected:
+  vtkShapeSplineFilter();
+  ~vtkShapeSplineFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+#ifndef __VTK_WRAP__
+  /**
+   * The family's curve through data (at least three distinct points) at the
+   * given knots. Called concurrently for different lines: must not modify the
+   * filter. Throws std::exception with a message on failure.
+   */
+  virtual std::unique_ptr<shapesplines::Curve> BuildCurve(
+    const shapesplines::CleanPolyline& data, const std::vector<double>& knots) const = 0;
+#endif
+
+  int Parameterization = CHORD_LENGTH;
+  bool Closed = false;
+  int SamplingMode = SUBDIVISIONS;
+  int NumberOfSubdivisions = 10;
+  double SampleLength = 1.0;
+  double DataShapeTolerance = 1e-6;
+  double CurveShapeTolerance = 1e-3;
+  bool VMTKArrayNames = false;
+
+private:
+  vtkShapeSplineFilter(const vtkShapeSplineFilter&) = delete;
+  void operator=(const vtkShapeSplineFilter&) = delete;
+};
+
+#endif
