@@ -1,6 +1,7 @@
 #include "Curve.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -25,6 +26,16 @@ int Curve::findSpan(double t) const
 
 Derivatives Curve::evaluate(double t, int order) const
 {
+  if (this->Closed)
+  {
+    // The parameter of a closed curve is periodic: t_n is t_0 again.
+    const double period = this->lastParameter() - this->firstParameter();
+    t = this->firstParameter() + std::fmod(t - this->firstParameter(), period);
+    if (t < this->firstParameter())
+    {
+      t += period;
+    }
+  }
   return this->evaluateOnSpan(this->findSpan(t), t, order);
 }
 } // namespace shapesplines

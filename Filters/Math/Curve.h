@@ -36,7 +36,8 @@ public:
   /// Span containing t (binary search; t outside the knots clamps to the end spans).
   int findSpan(double t) const;
 
-  /// Derivatives 0..order (order <= MaxDerivativeOrder) at t; entries above order are zero.
+  /// Derivatives 0..order (order <= MaxDerivativeOrder) at t; entries above order are
+  /// zero. A closed curve's parameter wraps around (t_n is t_0, on the first span).
   Derivatives evaluate(double t, int order = MaxDerivativeOrder) const;
 
   /// Same, with the span already known (t may lie on either end of it).

@@ -1,0 +1,83 @@
+// Shared data sets and measurements for the math core's unit tests.
+#ifndef shapesplines_MathTestUtilities_h
+#define shapesplines_MathTestUtilities_h
+
+#include "CubicSpline.h"
+#include "Curve.h"
+#include "FitPolyline.h"
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace shapesplines::test
+{
+constexpr double Pi = 3.14159265358979323846;
+
+/// Helix (a cos t, a sin t, b t): curvature a / (a^2 + b^2), torsion b / (a^2 + b^2).
+inline std::vector<Vec3> helix(int pointsPerTurn, int turns, double a = 2.0, double b = 1.0)
+{
+  std::vector<Vec3> points;
+  const int n = pointsPerTurn * turns;
+  for (int i = 0; i <= n; ++i)
+  {
+    const double t = 2.0 * Pi * i / pointsPerTurn;
+    points.emplace_back(a * std::cos(t), a * std::sin(t), b * t);
+  }
+  return points;
+}
+
+/// Points of a planar function graph (x_i, y_i, 0).
+inline std::vector<Vec3> planar(const std::vector<double>& x, const std::vector<double>& y)
+{
+  std::vector<Vec3> points;
+  for (size_t i = 0; i < x.size(); ++i)
+  {
+    points.emplace_back(x[i], y[i], 0.0);
+  }
+  return points;
+}
+
+inline std::vector<Vec3> akima()
+{
+  return planar({ 0, 2, 3, 5, 6, 8, 9, 11, 12, 14, 15 },
+    { 10, 10, 10, 10, 10, 10, 10.5, 15, 50, 60, 85 });
+}
+
+inline CurveBuilder cubicBuilder(CubicEndCondition ends = CubicEndCondition::NotAKnot)
+{
+  return [ends](const CleanPolyline& data, const std::vector<double>& knots) {
+    return std::unique_ptr<Curve>(
+      new CubicSpline(CubicSpline::interpolate(data.Points, knots, data.Closed, ends)));
+  };
+}
+
+struct RelativeErrors
+{
+  double Curvature = 0.0;
+  double Torsion = 0.0;
+};
+
+/// Largest relative curvature and torsion errors of samples whose span lies
+/// at least `margin` spans away from both ends.
+inline RelativeErrors interiorErrors(
+  const FittedPolyline& fit, double curvature, double torsion, int margin)
+{
+  RelativeErrors errors;
+  const int spans = fit.Data.numberOfSpans();
+  for (int k = 0; k < fit.Samples.size(); ++k)
+  {
+    const int span = fit.Samples.Span[k];
+    if (span < margin || span >= spans - margin)
+    {
+      continue;
+    }
+    errors.Curvature =
+      std::max(errors.Curvature, std::abs(fit.Frames[k].Curvature - curvature) / curvature);
+    errors.Torsion = std::max(errors.Torsion, std::abs(fit.Frames[k].Torsion - torsion) / torsion);
+  }
+  return errors;
+}
+} // namespace shapesplines::test
+
+#endif

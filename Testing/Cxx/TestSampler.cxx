@@ -1,0 +1,107 @@
+// Sampling: knots among the samples, counts, arc length against closed forms.
+#include "MathTestUtilities.h"
+
+#include "Sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace shapesplines;
+using namespace shapesplines::test;
+
+namespace
+{
+/// y = x^2 on x in [0, 2] at uneven knots t = x: a not-a-knot cubic is exact.
+CubicSpline parabola()
+{
+  std::vector<Vec3> points;
+  std::vector<double> t;
+  for (const double x : { 0.0, 0.3, 0.5, 1.1, 1.4, 2.0 })
+  {
+    points.emplace_back(x, x * x, 0);
+    t.push_back(x);
+  }
+  return CubicSpline::interpolate(points, t, false);
+}
+
+double parabolaLength(double x)
+{
+  return 0.5 * x * std::sqrt(1 + 4 * x * x) + 0.25 * std::asinh(2 * x);
+}
+} // namespace
+
+TEST(Sampler, SubdivisionsKeepTheKnots)
+{
+  const CubicSpline s = parabola();
+  SamplingOptions options;
+  options.Subdivisions = 7;
+  const CurveSamples samples = sampleCurve(s, options);
+  ASSERT_EQ(samples.size(), 5 * 7 + 1);
+  for (int i = 0; i <= 5; ++i)
+  {
+    EXPECT_EQ(samples.Parameter[7 * i], s.knots()[i]);
+  }
+  EXPECT_EQ(samples.Span.back(), 4);
+}
+
+TEST(Sampler, ArcLengthMatchesTheClosedForm)
+{
+  const CubicSpline s = parabola();
+  const CurveSamples samples = sampleCurve(s, SamplingOptions{});
+  EXPECT_NEAR(samples.Length, parabolaLength(2.0), 1e-12);
+  for (int k = 0; k < samples.size(); ++k)
+  {
+    EXPECT_NEAR(samples.ArcLength[k], parabolaLength(samples.Parameter[k]), 1e-12);
+  }
+}
+
+TEST(Sampler, ArcLengthModeSpacesSamplesEvenlyAndKeepsKnots)
+{
+  const CubicSpline s = parabola();
+  SamplingOptions options;
+  options.SampleMode = SamplingOptions::Mode::ArcLength;
+  options.TargetLength = 0.05;
+  const CurveSamples samples = sampleCurve(s, options);
+  for (int i = 0; i <= 5; ++i)
+  {
+    EXPECT_NE(std::find(samples.Parameter.begin(), samples.Parameter.end(), s.knots()[i]),
+      samples.Parameter.end());
+  }
+  for (int k = 1; k < samples.size(); ++k)
+  {
+    const double gap = samples.ArcLength[k] - samples.ArcLength[k - 1];
+    EXPECT_GT(gap, 0.0);
+    EXPECT_LE(gap, 0.05 * (1 + 1e-9));
+    // Within one span the gaps are equal to 1e-9.
+    if (k >= 2 && samples.Span[k] == samples.Span[k - 2] && samples.Span[k - 1] == samples.Span[k])
+    {
+      EXPECT_NEAR(gap, samples.ArcLength[k - 1] - samples.ArcLength[k - 2], 1e-9);
+    }
+  }
+  EXPECT_NEAR(samples.size(), parabolaLength(2.0) / 0.05, 6.0);
+}
+
+TEST(Sampler, SampleBudgetWidensTheSpacing)
+{
+  const CubicSpline s = parabola();
+  SamplingOptions options;
+  options.SampleMode = SamplingOptions::Mode::ArcLength;
+  options.TargetLength = 1e-12;
+  options.MaximumSamples = 1000;
+  const CurveSamples samples = sampleCurve(s, options);
+  EXPECT_TRUE(samples.LengthIncreased);
+  EXPECT_LE(samples.size(), 1000 + 6);
+}
+
+TEST(Sampler, ClosedCurvesDoNotRepeatTheSeam)
+{
+  std::vector<Vec3> square = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0) };
+  const CubicSpline s = CubicSpline::interpolate(square, { 0, 1, 2, 3, 4 }, true);
+  SamplingOptions options;
+  options.Subdivisions = 5;
+  const CurveSamples samples = sampleCurve(s, options);
+  EXPECT_EQ(samples.size(), 4 * 5);
+  EXPECT_LT(samples.Parameter.back(), 4.0);
+  EXPECT_GT(samples.Length, samples.ArcLength.back());
+}

@@ -1,0 +1,139 @@
+// Discrete shape of polylines and the Definition 1 audit (paper 001).
+#include "MathTestUtilities.h"
+
+#include "ShapeAnalysis.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace shapesplines;
+using namespace shapesplines::test;
+
+namespace
+{
+int failures(const ShapeAudit& audit, ShapeCriterion criterion)
+{
+  return audit.Failures[static_cast<int>(criterion)];
+}
+
+/// Audit samples of a fitted curve, frames changed by `edit`.
+template <typename Edit>
+std::vector<AuditSample> editedSamples(const FittedPolyline& fit, Edit edit)
+{
+  std::vector<AuditSample> samples(fit.Samples.size());
+  for (int k = 0; k < fit.Samples.size(); ++k)
+  {
+    samples[k].Span = fit.Samples.Span[k];
+    samples[k].Frame = fit.Frames[k];
+    edit(samples[k].Frame);
+  }
+  markKnots(samples, fit.Data.Closed);
+  return samples;
+}
+} // namespace
+
+TEST(DiscreteShape, HelixHasPositiveTorsionAndConvergingCurvature)
+{
+  for (const int perTurn : { 8, 32 })
+  {
+    const CleanPolyline line = cleanPolyline(helix(perTurn, 2), false);
+    const DiscreteShape shape = discreteShape(line);
+    const int n = static_cast<int>(line.Points.size());
+    for (int i = 1; i < n - 2; ++i)
+    {
+      EXPECT_GT(shape.Torsion[i], 0.0);
+      EXPECT_TRUE(shape.Twisted[i]);
+    }
+    EXPECT_EQ(shape.Torsion.front(), 0.0); // undefined at open ends
+    // Menger curvature of the helix samples tends to 0.4 (second order).
+    const double error = std::abs(shape.Curvature[n / 2] - 0.4) / 0.4;
+    EXPECT_LT(error, perTurn == 8 ? 0.1 : 0.005);
+  }
+}
+
+TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
+{
+  std::vector<Vec3> points = helix(8, 2);
+  const DiscreteShape shape = discreteShape(cleanPolyline(points, false));
+  for (Vec3& p : points)
+  {
+    p.z() = -p.z();
+  }
+  const DiscreteShape mirrored = discreteShape(cleanPolyline(points, false));
+  for (size_t i = 0; i < shape.Torsion.size(); ++i)
+  {
+    EXPECT_NEAR(mirrored.Torsion[i], -shape.Torsion[i], 1e-12);
+  }
+}
+
+TEST(DiscreteShape, AkimaFlatRunIsCollinearAndDataArePlanar)
+{
+  const DiscreteShape shape = discreteShape(cleanPolyline(akima(), false));
+  const std::vector<char> collinear = { 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0 };
+  EXPECT_EQ(shape.Collinear, collinear);
+  for (size_t i = 0; i < shape.Twisted.size(); ++i)
+  {
+    EXPECT_FALSE(shape.Twisted[i]);
+  }
+  // Turning left at x = 8, 9, 11 and 14, right at x = 12 (index 8).
+  for (const int i : { 5, 6, 7, 9 })
+  {
+    EXPECT_GT(shape.Binormal[i].z(), 0.0) << i;
+  }
+  EXPECT_LT(shape.Binormal[8].z(), 0.0);
+}
+
+TEST(ShapeAudit, CubicBreaksTheAkimaShape)
+{
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  std::printf("Akima, not-a-knot cubic: %d violations (collinearity %d, convexity at knots %d, "
+              "on spans %d)\n",
+    fit.Audit.violations(), failures(fit.Audit, ShapeCriterion::Collinearity),
+    failures(fit.Audit, ShapeCriterion::ConvexityAtKnot),
+    failures(fit.Audit, ShapeCriterion::ConvexityOnSpan));
+  EXPECT_GT(failures(fit.Audit, ShapeCriterion::Collinearity), 0);
+  EXPECT_FALSE(fit.Audit.preserving());
+  // Wiggles on the flat run: spans 0..4 are marked.
+  EXPECT_NE(fit.Audit.SpanMask[2] & (1u << static_cast<int>(ShapeCriterion::Collinearity)), 0u);
+  EXPECT_EQ(failures(fit.Audit, ShapeCriterion::Coplanarity), 0);
+}
+
+TEST(ShapeAudit, CubicKeepsTheHelixShape)
+{
+  const FittedPolyline fit = fitPolyline(helix(8, 3), FitOptions{}, cubicBuilder());
+  EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations() << " violations";
+}
+
+TEST(ShapeAudit, EachCriterionCanFail)
+{
+  const FittedPolyline helixFit = fitPolyline(helix(8, 3), FitOptions{}, cubicBuilder());
+  // Wrong-handed torsion: torsion sign at knots and on spans.
+  ShapeAudit audit = auditShape(helixFit.Data, helixFit.Shape,
+    editedSamples(helixFit, [](FrenetFrame& f) { f.Torsion = -f.Torsion; }));
+  EXPECT_GT(failures(audit, ShapeCriterion::TorsionSignAtKnot), 0);
+  EXPECT_EQ(failures(audit, ShapeCriterion::TorsionSignOnSpan), helixFit.Data.numberOfSpans() - 2);
+  // Curving the wrong way: convexity at knots and on spans.
+  audit = auditShape(helixFit.Data, helixFit.Shape,
+    editedSamples(helixFit, [](FrenetFrame& f) { f.Binormal = -f.Binormal; }));
+  EXPECT_GT(failures(audit, ShapeCriterion::ConvexityAtKnot), 0);
+  EXPECT_GT(failures(audit, ShapeCriterion::ConvexityOnSpan), 0);
+
+  // Planar data, osculating plane tilted by 0.1 rad: coplanarity.
+  const FittedPolyline planarFit = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  audit = auditShape(planarFit.Data, planarFit.Shape, editedSamples(planarFit, [](FrenetFrame& f) {
+    f.Binormal = (f.Binormal + Vec3(0.1, 0, 0)).normalized();
+  }));
+  EXPECT_GT(failures(audit, ShapeCriterion::Coplanarity), 0);
+}
+
+TEST(ShapeAudit, VanishingValuesAreNotSignChanges)
+{
+  // The data polygon itself (zero curvature and torsion everywhere) breaks no sign condition.
+  const FittedPolyline fit = fitPolyline(helix(8, 2), FitOptions{}, cubicBuilder());
+  const ShapeAudit audit = auditShape(fit.Data, fit.Shape, editedSamples(fit, [](FrenetFrame& f) {
+    f.Curvature = 0;
+    f.Torsion = 0;
+  }));
+  EXPECT_TRUE(audit.preserving());
+}
