@@ -18,6 +18,7 @@
 
 #include <exception>
 #include <initializer_list>
+#include <limits>
 #include <string>
 
 namespace
@@ -120,6 +121,10 @@ int vtkShapeSplineFilter::RequestData(
   options.Sampling.TargetLength = this->SampleLength;
   options.Tolerances.Data = this->DataShapeTolerance;
   options.Tolerances.Curve = this->CurveShapeTolerance;
+  // Float input is rounded to 6e-8 relative: curvature within that is noise.
+  options.CoordinatePrecision = input->GetPoints()->GetDataType() == VTK_FLOAT
+    ? std::numeric_limits<float>::epsilon()
+    : std::numeric_limits<double>::epsilon();
   const shapesplines::CurveBuilder build = [this](const shapesplines::CleanPolyline& data,
                                              const std::vector<double>& knots) {
     return this->BuildCurve(data, knots);

@@ -25,6 +25,62 @@ Vec3 parabolaDerivative(double t0, double t1, double t2, const Vec3& p0, const V
   const Vec3 d012 = (d12 - d01) / (t2 - t0);
   return d01 + (t0 - t1) * d012;
 }
+
+/**
+ * The second derivatives M_i at the knots (a closed spline has n of them,
+ * M_n = M_0): the tridiagonal (cyclic when closed) system of C2 continuity
+ * plus two end conditions. clamped is used by CubicEndCondition::Clamped only.
+ */
+Eigen::MatrixX3d solveMoments(const std::vector<Vec3>& points, const std::vector<double>& h,
+  bool closed, CubicEndCondition ends, const CubicSpline::EndDerivatives& clamped)
+{
+  const int n = static_cast<int>(points.size());
+  const int spans = static_cast<int>(h.size());
+  auto slope = [&](int i) -> Vec3 { return (points[(i + 1) % n] - points[i]) / h[i]; };
+  Triplets a;
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(n, 3);
+  const int firstInterior = closed ? 0 : 1;
+  const int lastInterior = closed ? n - 1 : n - 2;
+  for (int i = firstInterior; i <= lastInterior; ++i)
+  {
+    const int prev = (i - 1 + spans) % spans;
+    a.emplace_back(i, (i - 1 + n) % n, h[prev]);
+    a.emplace_back(i, i, 2.0 * (h[prev] + h[i]));
+    a.emplace_back(i, (i + 1) % n, h[i]);
+    rhs.row(i) = 6.0 * (slope(i) - slope(prev)).transpose();
+  }
+  if (!closed)
+  {
+    const int last = n - 1;
+    if (n == 2 || ends == CubicEndCondition::Natural)
+    {
+      a.emplace_back(0, 0, 1.0);
+      a.emplace_back(last, last, 1.0);
+    }
+    else if (ends == CubicEndCondition::NotAKnot)
+    {
+      // Equal third derivatives on both sides of t_1 and of t_{n-2}.
+      a.emplace_back(0, 0, h[1]);
+      a.emplace_back(0, 1, -(h[0] + h[1]));
+      a.emplace_back(0, 2, h[0]);
+      const int s = spans - 1;
+      a.emplace_back(last, last - 2, h[s]);
+      a.emplace_back(last, last - 1, -(h[s - 1] + h[s]));
+      a.emplace_back(last, last, h[s - 1]);
+    }
+    else
+    {
+      const int s = spans - 1;
+      a.emplace_back(0, 0, 2.0 * h[0]);
+      a.emplace_back(0, 1, h[0]);
+      rhs.row(0) = 6.0 * (slope(0) - clamped.first).transpose();
+      a.emplace_back(last, last - 1, h[s]);
+      a.emplace_back(last, last, 2.0 * h[s]);
+      rhs.row(last) = 6.0 * (clamped.second - slope(s)).transpose();
+    }
+  }
+  return solveSparse(n, a, rhs);
+}
 } // namespace
 
 CubicSpline::CubicSpline(std::vector<double> knots, bool closed)
@@ -70,61 +126,20 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   }
   auto slope = [&](int i) -> Vec3 { return (y(i + 1) - y(i)) / h[i]; };
 
-  // Unknowns: the second derivatives (moments) M_i at the knots; a closed
-  // spline has n of them (M_n = M_0), an open one n.
-  const int unknowns = n;
-  Triplets a;
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
-  const int firstInterior = closed ? 0 : 1;
-  const int lastInterior = closed ? n - 1 : n - 2;
-  for (int i = firstInterior; i <= lastInterior; ++i)
+  Eigen::MatrixX3d moments(n, 3);
+  if (!closed && n == 3 && ends == CubicEndCondition::NotAKnot)
   {
-    const int prev = (i - 1 + spans) % spans;
-    a.emplace_back(i, (i - 1 + n) % n, h[prev]);
-    a.emplace_back(i, i, 2.0 * (h[prev] + h[i]));
-    a.emplace_back(i, (i + 1) % n, h[i]);
-    rhs.row(i) = 6.0 * (slope(i) - slope(prev)).transpose();
+    // One parabola: every moment is its second derivative, set exactly so that
+    // the cubic coefficients (and a planar curve's torsion) are exactly zero.
+    const Vec3 second = 2.0 * (slope(1) - slope(0)) / (h[0] + h[1]);
+    moments.rowwise() = second.transpose();
   }
-  if (!closed)
+  else
   {
-    const int last = n - 1;
-    if (n == 2 || ends == CubicEndCondition::Natural)
-    {
-      a.emplace_back(0, 0, 1.0);
-      a.emplace_back(last, last, 1.0);
-    }
-    else if (ends == CubicEndCondition::NotAKnot && n == 3)
-    {
-      // One parabola: all moments equal.
-      a.emplace_back(0, 0, 1.0);
-      a.emplace_back(0, 1, -1.0);
-      a.emplace_back(last, last, 1.0);
-      a.emplace_back(last, last - 1, -1.0);
-    }
-    else if (ends == CubicEndCondition::NotAKnot)
-    {
-      // Equal third derivatives on both sides of t_1 and of t_{n-2}.
-      a.emplace_back(0, 0, h[1]);
-      a.emplace_back(0, 1, -(h[0] + h[1]));
-      a.emplace_back(0, 2, h[0]);
-      const int s = spans - 1;
-      a.emplace_back(last, last - 2, h[s]);
-      a.emplace_back(last, last - 1, -(h[s - 1] + h[s]));
-      a.emplace_back(last, last, h[s - 1]);
-    }
-    else
-    {
-      const EndDerivatives d = clamped ? *clamped : parabolaEndDerivatives(points, knots);
-      const int s = spans - 1;
-      a.emplace_back(0, 0, 2.0 * h[0]);
-      a.emplace_back(0, 1, h[0]);
-      rhs.row(0) = 6.0 * (slope(0) - d.first).transpose();
-      a.emplace_back(last, last - 1, h[s]);
-      a.emplace_back(last, last, 2.0 * h[s]);
-      rhs.row(last) = 6.0 * (d.second - slope(s)).transpose();
-    }
+    const bool needEnds = ends == CubicEndCondition::Clamped && !clamped;
+    const EndDerivatives d = needEnds ? parabolaEndDerivatives(points, knots) : clamped.value_or(EndDerivatives{});
+    moments = solveMoments(points, h, closed, ends, d);
   }
-  const Eigen::MatrixX3d moments = solveSparse(unknowns, a, rhs);
 
   CubicSpline spline(knots, closed);
   spline.Coefficients.resize(spans);

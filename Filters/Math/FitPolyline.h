@@ -23,6 +23,9 @@ struct FitOptions
   ShapeTolerances Tolerances;
   /// Samples per span of the shape audit, independent of the output sampling.
   int AuditSubdivisions = 16;
+  /// Relative precision of the input coordinates (FLT_EPSILON for float input):
+  /// curvature within their rounding counts as zero.
+  double CoordinatePrecision = 2.220446049250313e-16;
 };
 
 /// Builds a family's curve through the cleaned data (at least three points).
@@ -31,7 +34,12 @@ using CurveBuilder =
 
 struct FittedPolyline
 {
+  /// The cleaned points relative to Origin, the centre of their bounding box: the
+  /// spline is fitted there, so rounding scales with the line's size, not with its
+  /// distance from the coordinate origin. Samples are in input coordinates.
   CleanPolyline Data;
+  Vec3 Origin = Vec3::Zero();
+  double CoordinateNoise = 0.0; ///< absolute rounding of the input coordinates
   std::vector<double> Knots;
   std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
   CurveSamples Samples;
@@ -43,9 +51,19 @@ struct FittedPolyline
 /// Samples, frames and audits a curve; written once for every family.
 void sampleAndAudit(FittedPolyline& fit, const FitOptions& options);
 
+/**
+ * Per sample, the curvature indistinguishable from zero, where the Frenet
+ * normal and the torsion are not defined: 1e-10 of the inverse
+ * bounding-box diagonal, or what the data's rounding (coordinateNoise) can cause:
+ * an acceleration across the tangent of 32 noise / dt^2 on a span of parameter
+ * length dt, that is a curvature of 32 noise / (dt |s'|)^2.
+ */
+std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
+  const CleanPolyline& data, double coordinateNoise);
+
 /// Audits a curve through data on a uniform sampling (for automatic tension loops).
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
-  const ShapeTolerances& tolerances, int subdivisions);
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
 
 /**
  * Cleans the points, computes knots, builds the curve (two distinct points

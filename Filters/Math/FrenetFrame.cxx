@@ -24,12 +24,17 @@ Vec3 transport(const Vec3& normal, const Vec3& tangent)
 }
 } // namespace
 
-std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double lengthScale)
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature)
+{
+  return frenetFrames(samples, std::vector<double>(samples.size(), flatCurvature));
+}
+
+std::vector<FrenetFrame> frenetFrames(
+  const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature)
 {
   const int n = static_cast<int>(samples.size());
   std::vector<FrenetFrame> frames(n);
   std::vector<bool> defined(n, false);
-  const double flat = FlatCurvature / (lengthScale > 0 ? lengthScale : 1.0);
 
   Vec3 lastTangent = Vec3::UnitX();
   for (int k = 0; k < n; ++k)
@@ -56,11 +61,12 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, d
     const Vec3 cross = d1.cross(d2);
     const double crossNorm = cross.norm();
     const double curvature = speed > 0 ? crossNorm / (speed * speed * speed) : 0.0;
-    if (std::isfinite(curvature) && curvature > flat)
+    f.Curvature = std::isfinite(curvature) ? curvature : 0.0;
+    if (f.Curvature > flatCurvature[k])
     {
-      f.Curvature = curvature;
-      f.Binormal = cross / crossNorm;
-      f.Normal = f.Binormal.cross(f.Tangent);
+      // Orthonormalise against the tangent: near-parallel s', s'' round badly.
+      f.Normal = (cross / crossNorm).cross(f.Tangent).normalized();
+      f.Binormal = f.Tangent.cross(f.Normal);
       f.Torsion = d1.dot(d2.cross(d3)) / (crossNorm * crossNorm);
       defined[k] = true;
     }
@@ -73,7 +79,8 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, d
   {
     ++first;
   }
-  Vec3 normal = first < n ? frames[first].Normal : anyNormal(frames.empty() ? Vec3::UnitX() : frames[0].Tangent);
+  Vec3 normal =
+    first < n ? frames[first].Normal : anyNormal(frames.empty() ? Vec3::UnitX() : frames[0].Tangent);
   auto fill = [&](int k) {
     if (defined[k])
     {

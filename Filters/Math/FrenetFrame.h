@@ -18,18 +18,17 @@ struct FrenetFrame
 };
 
 /**
- * Curvature below FlatCurvature / lengthScale counts as zero: there the
- * torsion is 0 and the normal is carried by parallel transport from the
- * nearest sample where it is defined, so frames stay continuous and finite.
+ * Frenet frames along a sequence of samples (derivatives 1..3 used). The
+ * curvature is always the curve's own; where it is at or below flatCurvature[k]
+ * (within rounding of zero) the Frenet normal is undefined: the torsion is 0
+ * and the normal is carried by parallel transport from the nearest sample
+ * where it is defined, so frames stay continuous and finite.
  */
-constexpr double FlatCurvature = 1e-10;
+std::vector<FrenetFrame> frenetFrames(
+  const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature);
 
-/**
- * Frenet frames along a sequence of samples (derivatives 1..3 used).
- * lengthScale (e.g. the data's bounding-box diagonal) makes the flatness test
- * independent of units.
- */
-std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double lengthScale);
+/// The same with one threshold for every sample.
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature);
 } // namespace shapesplines
 
 #endif

@@ -1,0 +1,1470 @@
+// GoogleTest tests of the ShapeSplines VTK filters (vtkCubicSplineFilter through
+// vtkShapeSplineFilter, and vtkPolylineShapeAnalysis), driven through VTK
+// pipelines. Inputs are built in code unless a file of SHAPESPLINES_DATA_DIR
+// is named.
+#include "vtkCubicSplineFilter.h"
+#include "vtkPolylineShapeAnalysis.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <functional>
+#include <initializer_list>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+using Point = std::array<double, 3>;
+using Polyline = std::vector<Point>;
+using IdList = std::vector<vtkIdType>;
+
+constexpr double Pi = 3.14159265358979323846;
+constexpr double NaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double Inf = std::numeric_limits<double>::infinity();
+
+// ---------------------------------------------------------------------------
+// Small vector algebra on Point.
+Point operator-(const Point& a, const Point& b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+Point operator+(const Point& a, const Point& b)
+{
+  return { a[0] + b[0], a[1] + b[1], a[2] + b[2] };
+}
+Point operator*(double s, const Point& a)
+{
+  return { s * a[0], s * a[1], s * a[2] };
+}
+double Dot(const Point& a, const Point& b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Point Cross(const Point& a, const Point& b)
+{
+  return { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+}
+double Norm(const Point& a)
+{
+  return std::sqrt(Dot(a, a));
+}
+bool IsFinite(const Point& a)
+{
+  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+}
+
+/// Reports a measured figure on stdout and in the test's XML record.
+void Measure(const std::string& name, double value)
+{
+  std::ostringstream text;
+  text.precision(6);
+  text << value;
+  std::cout << "[  MEASURE ] " << name << " = " << text.str() << std::endl;
+  ::testing::Test::RecordProperty(name, text.str());
+}
+
+// ---------------------------------------------------------------------------
+// Building inputs.
+
+/**
+ * Builds poly data from polylines and other cells. Every cell gets its cell
+ * id in the cell array InputCellId (VTK orders cells verts, lines, polys,
+ * strips) and every point the point array Value = x + 2y + 3z, so tests can
+ * follow input data into the output.
+ */
+class PolyDataBuilder
+{
+public:
+  PolyDataBuilder() { this->Points->SetDataTypeToDouble(); }
+
+  IdList AddPoints(const Polyline& points)
+  {
+    IdList ids;
+    for (const Point& p : points)
+    {
+      ids.push_back(this->Points->InsertNextPoint(p.data()));
+    }
+    return ids;
+  }
+  PolyDataBuilder& LineIds(const IdList& ids) { return this->Insert(this->Lines, ids); }
+  PolyDataBuilder& Line(const Polyline& points) { return this->LineIds(this->AddPoints(points)); }
+  PolyDataBuilder& Vertex(const Point& p)
+  {
+    return this->Insert(this->Verts, this->AddPoints({ p }));
+  }
+  PolyDataBuilder& Polygon(const Polyline& points)
+  {
+    return this->Insert(this->Polys, this->AddPoints(points));
+  }
+  PolyDataBuilder& Strip(const Polyline& points)
+  {
+    return this->Insert(this->Strips, this->AddPoints(points));
+  }
+
+  vtkSmartPointer<vtkPolyData> Build() const
+  {
+    auto polyData = vtkSmartPointer<vtkPolyData>::New();
+    polyData->SetPoints(this->Points);
+    polyData->SetVerts(this->Verts);
+    polyData->SetLines(this->Lines);
+    polyData->SetPolys(this->Polys);
+    polyData->SetStrips(this->Strips);
+    vtkNew<vtkDoubleArray> value;
+    value->SetName("Value");
+    value->SetNumberOfTuples(this->Points->GetNumberOfPoints());
+    for (vtkIdType i = 0; i < this->Points->GetNumberOfPoints(); ++i)
+    {
+      const double* p = this->Points->GetPoint(i);
+      value->SetValue(i, p[0] + 2 * p[1] + 3 * p[2]);
+    }
+    polyData->GetPointData()->AddArray(value);
+    vtkNew<vtkIdTypeArray> cellId;
+    cellId->SetName("InputCellId");
+    cellId->SetNumberOfTuples(polyData->GetNumberOfCells());
+    for (vtkIdType c = 0; c < polyData->GetNumberOfCells(); ++c)
+    {
+      cellId->SetValue(c, c);
+    }
+    polyData->GetCellData()->AddArray(cellId);
+    return polyData;
+  }
+
+private:
+  PolyDataBuilder& Insert(vtkCellArray* cells, const IdList& ids)
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    return *this;
+  }
+
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Verts;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkCellArray> Polys;
+  vtkNew<vtkCellArray> Strips;
+};
+
+vtkSmartPointer<vtkPolyData> PolylinesData(const std::vector<Polyline>& lines)
+{
+  PolyDataBuilder builder;
+  for (const Polyline& line : lines)
+  {
+    builder.Line(line);
+  }
+  return builder.Build();
+}
+
+/// count points on the circle of radius r about center in the plane z = center z.
+Polyline Circle(double r, int count, const Point& center = { 0, 0, 0 })
+{
+  Polyline points;
+  for (int i = 0; i < count; ++i)
+  {
+    const double angle = 2 * Pi * i / count;
+    points.push_back(center + Point{ r * std::cos(angle), r * std::sin(angle), 0.0 });
+  }
+  return points;
+}
+
+/// Points origin + x u + y v of the planar points (x, y, 0).
+Polyline InPlane(const Polyline& planar, const Point& origin, const Point& u, const Point& v)
+{
+  Polyline points;
+  for (const Point& p : planar)
+  {
+    points.push_back(origin + p[0] * u + p[1] * v);
+  }
+  return points;
+}
+
+/// Akima's data (Data/akima.vtp), in the plane z = 0.
+Polyline AkimaPoints()
+{
+  const std::vector<double> x = { 0, 2, 3, 5, 6, 8, 9, 11, 12, 14, 15 };
+  const std::vector<double> y = { 10, 10, 10, 10, 10, 10, 10.5, 15, 50, 60, 85 };
+  Polyline points;
+  for (size_t i = 0; i < x.size(); ++i)
+  {
+    points.push_back({ x[i], y[i], 0.0 });
+  }
+  return points;
+}
+
+vtkSmartPointer<vtkPolyData> ReadData(const std::string& name)
+{
+  const char* dir = std::getenv("SHAPESPLINES_DATA_DIR");
+  if (!dir)
+  {
+    ADD_FAILURE() << "SHAPESPLINES_DATA_DIR is not set";
+    return vtkSmartPointer<vtkPolyData>::New();
+  }
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName((std::string(dir) + "/" + name).c_str());
+  reader->Update();
+  vtkSmartPointer<vtkPolyData> data = reader->GetOutput();
+  EXPECT_GT(data->GetNumberOfPoints(), 0) << "cannot read " << name;
+  return data;
+}
+
+vtkSmartPointer<vtkPolyData> DeepCopy(vtkPolyData* polyData)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(polyData);
+  return copy;
+}
+
+// ---------------------------------------------------------------------------
+// Reading outputs.
+
+Point PointOf(vtkPolyData* polyData, vtkIdType id)
+{
+  Point p;
+  polyData->GetPoint(id, p.data());
+  return p;
+}
+
+std::vector<IdList> CellsOf(vtkCellArray* cells)
+{
+  std::vector<IdList> result;
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    it->GetCurrentCell(npts, ids);
+    result.emplace_back(ids, ids + npts);
+  }
+  return result;
+}
+
+std::vector<IdList> LinesOf(vtkPolyData* polyData)
+{
+  return CellsOf(polyData->GetLines());
+}
+
+vtkDataArray* PointArray(vtkPolyData* polyData, const char* name)
+{
+  vtkDataArray* array = polyData->GetPointData()->GetArray(name);
+  EXPECT_NE(array, nullptr) << "no point array " << name;
+  return array;
+}
+
+vtkDataArray* CellArray(vtkPolyData* polyData, const char* name)
+{
+  vtkDataArray* array = polyData->GetCellData()->GetArray(name);
+  EXPECT_NE(array, nullptr) << "no cell array " << name;
+  return array;
+}
+
+Point Vector(vtkDataArray* array, vtkIdType id)
+{
+  Point v;
+  array->GetTuple(id, v.data());
+  return v;
+}
+
+/// The i-th value of an array, components of a tuple being consecutive.
+double FlatValue(vtkDataArray* array, vtkIdType i)
+{
+  const int components = array->GetNumberOfComponents();
+  return array->GetComponent(i / components, static_cast<int>(i % components));
+}
+
+/// Largest |value| of a one-component array over the given ids.
+double MaxAbs(vtkDataArray* array, const IdList& ids)
+{
+  double largest = 0;
+  for (const vtkIdType id : ids)
+  {
+    largest = std::max(largest, std::abs(array->GetTuple1(id)));
+  }
+  return largest;
+}
+
+/// The distinct point ids of a line (a closed line's repeated seam id once).
+IdList DistinctIds(const IdList& line)
+{
+  const bool closed = line.size() > 1 && line.front() == line.back();
+  return IdList(line.begin(), closed ? line.end() - 1 : line.end());
+}
+
+// ---------------------------------------------------------------------------
+// Comparing poly data.
+
+/// Equal within tolerance, NaN equal to NaN.
+bool Near(double a, double b, double tolerance)
+{
+  if (std::isnan(a) || std::isnan(b))
+  {
+    return std::isnan(a) && std::isnan(b);
+  }
+  return a == b || std::abs(a - b) <= tolerance;
+}
+
+void ExpectArraysNear(
+  vtkFieldData* expected, vtkFieldData* actual, double tolerance, const std::string& what)
+{
+  ASSERT_EQ(expected->GetNumberOfArrays(), actual->GetNumberOfArrays()) << what;
+  for (int a = 0; a < expected->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* e = expected->GetArray(a);
+    ASSERT_NE(e, nullptr) << what;
+    vtkDataArray* b = actual->GetArray(e->GetName());
+    ASSERT_NE(b, nullptr) << what << ": no array " << e->GetName();
+    ASSERT_EQ(e->GetNumberOfComponents(), b->GetNumberOfComponents()) << what << e->GetName();
+    ASSERT_EQ(e->GetNumberOfTuples(), b->GetNumberOfTuples()) << what << e->GetName();
+    int reported = 0;
+    for (vtkIdType i = 0; i < e->GetNumberOfValues(); ++i)
+    {
+      const double x = FlatValue(e, i);
+      const double y = FlatValue(b, i);
+      if (!Near(x, y, tolerance) && reported++ < 5)
+      {
+        ADD_FAILURE() << what << ": array " << e->GetName() << " value " << i << ": " << x << " vs "
+                      << y;
+      }
+    }
+  }
+}
+
+/// Same points (within tolerance), cells and arrays.
+void ExpectPolyDataNear(
+  vtkPolyData* expected, vtkPolyData* actual, double tolerance, const std::string& what)
+{
+  ASSERT_EQ(expected->GetNumberOfPoints(), actual->GetNumberOfPoints()) << what;
+  int reported = 0;
+  for (vtkIdType i = 0; i < expected->GetNumberOfPoints(); ++i)
+  {
+    const Point p = PointOf(expected, i);
+    const Point q = PointOf(actual, i);
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!Near(p[c], q[c], tolerance) && reported++ < 5)
+      {
+        ADD_FAILURE() << what << ": point " << i << " component " << c << ": " << p[c] << " vs "
+                      << q[c];
+      }
+    }
+  }
+  EXPECT_EQ(CellsOf(expected->GetVerts()), CellsOf(actual->GetVerts())) << what;
+  EXPECT_EQ(CellsOf(expected->GetLines()), CellsOf(actual->GetLines())) << what;
+  EXPECT_EQ(CellsOf(expected->GetPolys()), CellsOf(actual->GetPolys())) << what;
+  EXPECT_EQ(CellsOf(expected->GetStrips()), CellsOf(actual->GetStrips())) << what;
+  ExpectArraysNear(expected->GetPointData(), actual->GetPointData(), tolerance, what + " (points)");
+  ExpectArraysNear(expected->GetCellData(), actual->GetCellData(), tolerance, what + " (cells)");
+}
+
+// ---------------------------------------------------------------------------
+// Running filters and capturing their messages.
+
+/// Records the error and warning messages objects emit while it lives.
+class MessageLog
+{
+public:
+  explicit MessageLog(std::initializer_list<vtkObject*> objects)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback(&MessageLog::Record);
+    for (vtkObject* object : objects)
+    {
+      for (const unsigned long event : { vtkCommand::ErrorEvent, vtkCommand::WarningEvent })
+      {
+        this->Tags.emplace_back(object, object->AddObserver(event, this->Callback));
+      }
+    }
+  }
+  ~MessageLog()
+  {
+    for (const auto& [object, tag] : this->Tags)
+    {
+      object->RemoveObserver(tag);
+    }
+  }
+  MessageLog(const MessageLog&) = delete;
+  MessageLog& operator=(const MessageLog&) = delete;
+
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+
+private:
+  static void Record(vtkObject*, unsigned long event, void* self, void* message)
+  {
+    auto* log = static_cast<MessageLog*>(self);
+    (event == vtkCommand::ErrorEvent ? log->Errors : log->Warnings)
+      .emplace_back(message ? static_cast<const char*>(message) : "");
+  }
+
+  vtkNew<vtkCallbackCommand> Callback;
+  std::vector<std::pair<vtkSmartPointer<vtkObject>, unsigned long>> Tags;
+};
+
+/// Messages containing every one of the given fragments.
+int CountMessages(
+  const std::vector<std::string>& messages, const std::vector<std::string>& fragments)
+{
+  return static_cast<int>(
+    std::count_if(messages.begin(), messages.end(), [&](const std::string& m) {
+      return std::all_of(fragments.begin(), fragments.end(),
+        [&](const std::string& f) { return m.find(f) != std::string::npos; });
+    }));
+}
+
+std::string Joined(const std::vector<std::string>& messages)
+{
+  std::string all;
+  for (const std::string& m : messages)
+  {
+    all += m;
+  }
+  return all;
+}
+
+/// The output of a pipeline and the messages its filters emitted.
+struct FilterRun
+{
+  vtkSmartPointer<vtkPolyData> Output;
+  std::vector<std::string> Errors;
+  std::vector<std::string> Warnings;
+};
+
+/**
+ * Updates the last filter of a pipeline that reads input, capturing the
+ * messages of every filter in it, and checks that input comes out unmodified.
+ */
+FilterRun UpdateChecked(
+  vtkPolyData* input, vtkPolyDataAlgorithm* last, std::initializer_list<vtkObject*> filters)
+{
+  const auto before = DeepCopy(input);
+  FilterRun run;
+  {
+    MessageLog log(filters);
+    last->Update();
+    run.Errors = log.Errors;
+    run.Warnings = log.Warnings;
+  }
+  run.Output = last->GetOutput();
+  ExpectPolyDataNear(before, input, 0.0, "input after the filter");
+  return run;
+}
+
+using CubicSetup = std::function<void(vtkCubicSplineFilter*)>;
+
+/// Runs a cubic spline filter (configured by setup) on input.
+FilterRun RunCubic(vtkPolyData* input, const CubicSetup& setup = {})
+{
+  vtkNew<vtkCubicSplineFilter> filter;
+  if (setup)
+  {
+    setup(filter);
+  }
+  filter->SetInputData(input);
+  return UpdateChecked(input, filter, { filter });
+}
+
+void ExpectNoMessages(const FilterRun& run)
+{
+  EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+  EXPECT_TRUE(run.Warnings.empty()) << Joined(run.Warnings);
+}
+
+// ---------------------------------------------------------------------------
+// Properties of curve outputs.
+
+const std::vector<std::pair<const char*, int>> CurvePointArrays = { { "Curvature", 1 },
+  { "Torsion", 1 }, { "Tangent", 3 }, { "Normal", 3 }, { "Binormal", 3 }, { "Parameter", 1 },
+  { "ArcLength", 1 }, { "SpanIndex", 1 } };
+const std::vector<const char*> CurveCellArrays = { "ShapePreserving", "ShapeViolations", "Length",
+  "Tortuosity" };
+
+/// Tangent, Normal, Binormal unit, orthogonal and right-handed at ids; the
+/// worst deviation is reported once, with the sample where it occurs.
+void ExpectOrthonormalFrames(vtkPolyData* curve, const IdList& ids, double tolerance = 1e-12)
+{
+  vtkDataArray* tangent = PointArray(curve, "Tangent");
+  vtkDataArray* normal = PointArray(curve, "Normal");
+  vtkDataArray* binormal = PointArray(curve, "Binormal");
+  ASSERT_TRUE(tangent && normal && binormal);
+  double worst = 0;
+  vtkIdType worstId = -1;
+  for (const vtkIdType id : ids)
+  {
+    const Point t = Vector(tangent, id);
+    const Point n = Vector(normal, id);
+    const Point b = Vector(binormal, id);
+    ASSERT_TRUE(IsFinite(t) && IsFinite(n) && IsFinite(b)) << "sample " << id;
+    for (const double deviation : { Norm(t) - 1, Norm(n) - 1, Norm(b) - 1, Dot(t, n), Dot(t, b),
+           Dot(n, b), Norm(Cross(t, n) - b) })
+    {
+      if (std::abs(deviation) > worst)
+      {
+        worst = std::abs(deviation);
+        worstId = id;
+      }
+    }
+  }
+  EXPECT_LE(worst, tolerance) << "frame not orthonormal at sample " << worstId;
+}
+
+/// No NaN or Inf in the points or in any point array.
+void ExpectAllFinite(vtkPolyData* polyData)
+{
+  for (vtkIdType i = 0; i < polyData->GetNumberOfPoints(); ++i)
+  {
+    ASSERT_TRUE(IsFinite(PointOf(polyData, i))) << "point " << i;
+  }
+  vtkPointData* pd = polyData->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    for (vtkIdType v = 0; array && v < array->GetNumberOfValues(); ++v)
+    {
+      ASSERT_TRUE(std::isfinite(FlatValue(array, v))) << array->GetName() << " value " << v;
+    }
+  }
+}
+
+/// The samples k * subdivisions of an open line are its k-th (distinct) input point.
+void ExpectDataPointsAmongSamples(
+  const Polyline& data, vtkPolyData* curve, const IdList& line, int subdivisions)
+{
+  ASSERT_EQ(line.size(), (data.size() - 1) * subdivisions + 1);
+  for (size_t k = 0; k < data.size(); ++k)
+  {
+    const Point sample = PointOf(curve, line[k * subdivisions]);
+    EXPECT_NEAR(Norm(sample - data[k]), 0.0, 1e-12) << "data point " << k;
+  }
+}
+
+Polyline PointsOfLine(vtkPolyData* polyData, const IdList& line)
+{
+  Polyline points;
+  for (const vtkIdType id : line)
+  {
+    points.push_back(PointOf(polyData, id));
+  }
+  return points;
+}
+
+// Helix of Data/helix.vtp: (a cos t, a sin t, b t), t = 0, pi/4, ..., 8 pi.
+constexpr double HelixA = 2.0;
+constexpr double HelixB = 1.0;
+constexpr double HelixStep = Pi / 4;
+constexpr double HelixEnd = 8 * Pi;
+const double HelixCurvature = HelixA / (HelixA * HelixA + HelixB * HelixB); // 0.4
+const double HelixTorsion = HelixB / (HelixA * HelixA + HelixB * HelixB);   // 0.2
+
+Point HelixPoint(double t)
+{
+  return { HelixA * std::cos(t), HelixA * std::sin(t), HelixB * t };
+}
+
+// ===========================================================================
+// Contract of the output on the helix.
+
+TEST(CubicSplineFilter, HelixOutputContract)
+{
+  const auto helix = ReadData("helix.vtp");
+  ASSERT_EQ(helix->GetNumberOfPoints(), 33);
+  const FilterRun run = RunCubic(helix);
+  ExpectNoMessages(run);
+  vtkPolyData* curve = run.Output;
+
+  const auto lines = LinesOf(curve);
+  ASSERT_EQ(lines.size(), LinesOf(helix).size());
+  ASSERT_EQ(curve->GetNumberOfCells(), 1);
+  const IdList& line = lines[0];
+  const vtkIdType n = curve->GetNumberOfPoints();
+  ASSERT_EQ(static_cast<vtkIdType>(line.size()), n);
+
+  for (const auto& [name, components] : CurvePointArrays)
+  {
+    vtkDataArray* array = PointArray(curve, name);
+    ASSERT_NE(array, nullptr);
+    EXPECT_EQ(array->GetNumberOfComponents(), components) << name;
+    EXPECT_EQ(array->GetNumberOfTuples(), n) << name;
+  }
+  for (const char* name : CurveCellArrays)
+  {
+    vtkDataArray* array = CellArray(curve, name);
+    ASSERT_NE(array, nullptr);
+    EXPECT_EQ(array->GetNumberOfComponents(), 1) << name;
+    EXPECT_EQ(array->GetNumberOfTuples(), 1) << name;
+  }
+
+  // The data points (the helix at t = k pi / 4) are the samples 0, N, 2N, ...
+  // (default N = 10).
+  const Polyline data = PointsOfLine(helix, LinesOf(helix)[0]);
+  for (size_t k = 0; k < data.size(); ++k)
+  {
+    ASSERT_NEAR(Norm(data[k] - HelixPoint(k * HelixStep)), 0.0, 1e-12) << "helix.vtp point " << k;
+  }
+  ExpectDataPointsAmongSamples(data, curve, line, 10);
+  vtkDataArray* span = PointArray(curve, "SpanIndex");
+  for (size_t k = 0; k + 1 < line.size(); ++k)
+  {
+    EXPECT_EQ(span->GetTuple1(line[k]), static_cast<double>(k / 10)) << "sample " << k;
+  }
+
+  ExpectOrthonormalFrames(curve, line);
+
+  // ArcLength and Parameter increase; ArcLength ends at the Length.
+  vtkDataArray* arcLength = PointArray(curve, "ArcLength");
+  vtkDataArray* parameter = PointArray(curve, "Parameter");
+  EXPECT_EQ(arcLength->GetTuple1(line.front()), 0.0);
+  for (size_t k = 1; k < line.size(); ++k)
+  {
+    EXPECT_GT(arcLength->GetTuple1(line[k]), arcLength->GetTuple1(line[k - 1])) << "sample " << k;
+    EXPECT_GT(parameter->GetTuple1(line[k]), parameter->GetTuple1(line[k - 1])) << "sample " << k;
+  }
+  const double length = CellArray(curve, "Length")->GetTuple1(0);
+  const double lastArcLength = arcLength->GetTuple1(line.back());
+  Measure("helix_length_minus_last_arclength", length - lastArcLength);
+  EXPECT_NEAR(lastArcLength, length, 1e-9 * length);
+
+  // The true length of the helix over t in [0, 8 pi] is sqrt(a^2 + b^2) 8 pi.
+  const double trueLength = std::sqrt(HelixA * HelixA + HelixB * HelixB) * HelixEnd;
+  Measure("helix_length_relative_error", (length - trueLength) / trueLength);
+  EXPECT_NEAR(length, trueLength, 1e-3 * trueLength);
+
+  // Tortuosity of an open line: length / end-to-end distance.
+  const double chord = Norm(data.back() - data.front());
+  EXPECT_NEAR(CellArray(curve, "Tortuosity")->GetTuple1(0), length / chord, 1e-12 * length / chord);
+
+  // The input's Radius (2 everywhere) is interpolated.
+  vtkDataArray* radius = PointArray(curve, "Radius");
+  ASSERT_NE(radius, nullptr);
+  ASSERT_EQ(radius->GetNumberOfTuples(), n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    EXPECT_NEAR(radius->GetTuple1(i), 2.0, 1e-12) << "sample " << i;
+  }
+
+  // Away from the not-a-knot ends the spline's curvature and torsion are close
+  // to the helix's (0.4, 0.2), measured on the spans 4 .. 27. With 8 points per
+  // turn (h = pi/4) the spline's second derivative at the knots is that of the
+  // helix times 12 (1 - cos h) / (h^2 (4 + 2 cos h)) = 1.0524 (the periodic
+  // moment equations for cos and sin), so curvature is off by about 5%;
+  // torsion also uses the third derivative, piecewise constant, off by O(h).
+  IdList interior(line.begin() + 4 * 10, line.end() - 4 * 10);
+  double curvatureError = 0;
+  double torsionError = 0;
+  for (const vtkIdType id : interior)
+  {
+    curvatureError = std::max(curvatureError,
+      std::abs(PointArray(curve, "Curvature")->GetTuple1(id) - HelixCurvature) / HelixCurvature);
+    torsionError = std::max(torsionError,
+      std::abs(PointArray(curve, "Torsion")->GetTuple1(id) - HelixTorsion) / HelixTorsion);
+  }
+  Measure("helix_interior_curvature_max_relative_error", curvatureError);
+  Measure("helix_interior_torsion_max_relative_error", torsionError);
+  EXPECT_LT(curvatureError, 0.08);
+  EXPECT_LT(torsionError, 0.15);
+}
+
+TEST(CubicSplineFilter, DataPointsAmongSamplesForAnySubdivisions)
+{
+  const auto helix = ReadData("helix.vtp");
+  const Polyline data = PointsOfLine(helix, LinesOf(helix)[0]);
+  for (const int subdivisions : { 1, 3, 7 })
+  {
+    SCOPED_TRACE("NumberOfSubdivisions " + std::to_string(subdivisions));
+    const FilterRun run =
+      RunCubic(helix, [&](vtkCubicSplineFilter* f) { f->SetNumberOfSubdivisions(subdivisions); });
+    ExpectNoMessages(run);
+    ExpectDataPointsAmongSamples(data, run.Output, LinesOf(run.Output)[0], subdivisions);
+  }
+}
+
+// ===========================================================================
+// Closed lines.
+
+constexpr double CircleRadius = 3.0;
+constexpr int CirclePoints = 16;
+const Point CircleCenter = { 1.0, -2.0, 0.5 };
+
+/// The circle's points with the first id repeated at the end (closed by data).
+vtkSmartPointer<vtkPolyData> ClosedCircleData()
+{
+  PolyDataBuilder builder;
+  IdList ids = builder.AddPoints(Circle(CircleRadius, CirclePoints, CircleCenter));
+  ids.push_back(ids.front());
+  return builder.LineIds(ids).Build();
+}
+
+TEST(CubicSplineFilter, ClosedLineIsPeriodicWithoutSeamDuplicate)
+{
+  const FilterRun run = RunCubic(ClosedCircleData());
+  ExpectNoMessages(run);
+  vtkPolyData* curve = run.Output;
+  const auto lines = LinesOf(curve);
+  ASSERT_EQ(lines.size(), 1u);
+  const IdList& line = lines[0];
+  const int subdivisions = 10;
+
+  // The cell is closed by repeating its first id; the seam point is stored once.
+  ASSERT_EQ(line.size(), static_cast<size_t>(CirclePoints * subdivisions + 1));
+  EXPECT_EQ(line.front(), line.back());
+  EXPECT_EQ(curve->GetNumberOfPoints(), CirclePoints * subdivisions);
+  IdList distinct = DistinctIds(line);
+  std::sort(distinct.begin(), distinct.end());
+  EXPECT_EQ(std::adjacent_find(distinct.begin(), distinct.end()), distinct.end());
+  const Point seam = PointOf(curve, line.front());
+  for (size_t k = 1; k + 1 < line.size(); ++k)
+  {
+    EXPECT_GT(Norm(PointOf(curve, line[k]) - seam), 1e-6) << "sample " << k << " repeats the seam";
+  }
+
+  // Curvature of the periodic spline through 16 points of a circle of radius R.
+  // With h = 2 pi / 16 (equal chords make chord-length knots uniform, and
+  // curvature ignores a uniform rescaling of the parameter) the spline's
+  // second derivative at a knot is the circle's times
+  // lambda = 12 (1 - cos h) / (h^2 (4 + 2 cos h)) and its first derivative the
+  // circle's times mu = sin h (1 / h + h lambda / 6); they stay orthogonal, so
+  // kappa R = lambda / mu^2 = 1.01319 at every knot: a C2 cubic through 16
+  // points cannot be within 1% of the circle's curvature there.
+  const double h = 2 * Pi / CirclePoints;
+  const double lambda = 12 * (1 - std::cos(h)) / (h * h * (4 + 2 * std::cos(h)));
+  const double mu = std::sin(h) * (1 / h + h * lambda / 6);
+  const double atKnots = lambda / (mu * mu);
+  Measure("circle16_predicted_knot_curvature_relative_error", atKnots - 1);
+  vtkDataArray* curvature = PointArray(curve, "Curvature");
+  double worst = 0;
+  for (size_t k = 0; k + 1 < line.size(); ++k)
+  {
+    const double relative = curvature->GetTuple1(line[k]) * CircleRadius;
+    worst = std::max(worst, std::abs(relative - 1.0));
+    if (k % subdivisions == 0)
+    {
+      EXPECT_NEAR(relative, atKnots, 1e-9) << "knot " << k / subdivisions;
+    }
+  }
+  Measure("circle16_curvature_max_relative_error", worst);
+  EXPECT_LT(worst, 0.015);
+  EXPECT_LE(MaxAbs(PointArray(curve, "Torsion"), line), 1e-12);
+  ExpectOrthonormalFrames(curve, line);
+
+  EXPECT_EQ(CellArray(curve, "Tortuosity")->GetTuple1(0), 0.0);
+  const double length = CellArray(curve, "Length")->GetTuple1(0);
+  Measure("circle16_length_relative_error", length / (2 * Pi * CircleRadius) - 1);
+  EXPECT_NEAR(length, 2 * Pi * CircleRadius, 1e-3 * 2 * Pi * CircleRadius);
+}
+
+TEST(CubicSplineFilter, ClosedOptionEqualsRepeatedSeam)
+{
+  const FilterRun byData = RunCubic(ClosedCircleData());
+  const FilterRun byOption =
+    RunCubic(PolylinesData({ Circle(CircleRadius, CirclePoints, CircleCenter) }),
+      [](vtkCubicSplineFilter* f) { f->ClosedOn(); });
+  ExpectNoMessages(byOption);
+  ExpectPolyDataNear(byData.Output, byOption.Output, 1e-12, "Closed option vs repeated seam");
+}
+
+// ===========================================================================
+// Bad input.
+
+TEST(CubicSplineFilter, EmptyInput)
+{
+  vtkNew<vtkPolyData> empty;
+  const FilterRun run = RunCubic(empty);
+  EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+  EXPECT_EQ(CountMessages(run.Warnings, { "no lines" }), 1) << Joined(run.Warnings);
+  EXPECT_EQ(run.Output->GetNumberOfPoints(), 0);
+  EXPECT_EQ(run.Output->GetNumberOfCells(), 0);
+}
+
+TEST(CubicSplineFilter, OnePointLinePassedThrough)
+{
+  const Point lone = { 1.5, -2.5, 3.25 };
+  const auto input = PolylinesData({ AkimaPoints(), { lone } });
+  const FilterRun run = RunCubic(input);
+  EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+  EXPECT_EQ(CountMessages(run.Warnings, { "cell 1", "fewer than two distinct points" }), 1)
+    << Joined(run.Warnings);
+
+  const auto lines = LinesOf(run.Output);
+  ASSERT_EQ(lines.size(), 2u);
+  ASSERT_EQ(lines[1].size(), 1u);
+  EXPECT_EQ(PointOf(run.Output, lines[1][0]), lone);
+  EXPECT_EQ(
+    PointArray(run.Output, "Value")->GetTuple1(lines[1][0]), lone[0] + 2 * lone[1] + 3 * lone[2]);
+  EXPECT_EQ(CellArray(run.Output, "InputCellId")->GetTuple1(1), 1.0);
+  EXPECT_EQ(CellArray(run.Output, "Length")->GetTuple1(1), 0.0);
+  ExpectAllFinite(run.Output);
+}
+
+TEST(CubicSplineFilter, TwoPointLineIsStraightSegment)
+{
+  const Point a = { 1, 2, 3 };
+  const Point b = { 4, -2, 15 };
+  const FilterRun run = RunCubic(PolylinesData({ { a, b } }));
+  EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+  EXPECT_EQ(CountMessages(run.Warnings, { "cell 0", "two distinct points" }), 1)
+    << Joined(run.Warnings);
+
+  vtkPolyData* curve = run.Output;
+  ExpectAllFinite(curve);
+  const IdList line = LinesOf(curve).at(0);
+  ASSERT_EQ(line.size(), 11u);
+  const Point direction = (1.0 / Norm(b - a)) * (b - a);
+  for (size_t k = 0; k < line.size(); ++k)
+  {
+    const Point p = PointOf(curve, line[k]);
+    EXPECT_NEAR(Norm(Cross(p - a, direction)), 0.0, 1e-12) << "sample " << k << " off the segment";
+    EXPECT_NEAR(Norm(Vector(PointArray(curve, "Tangent"), line[k]) - direction), 0.0, 1e-12);
+  }
+  EXPECT_EQ(MaxAbs(PointArray(curve, "Curvature"), line), 0.0);
+  EXPECT_EQ(MaxAbs(PointArray(curve, "Torsion"), line), 0.0);
+  ExpectOrthonormalFrames(curve, line);
+  // On a straight span the input's Value = x + 2y + 3z, interpolated linearly,
+  // is the same function of the sample's position.
+  vtkDataArray* value = PointArray(curve, "Value");
+  for (const vtkIdType id : line)
+  {
+    const Point p = PointOf(curve, id);
+    EXPECT_NEAR(value->GetTuple1(id), p[0] + 2 * p[1] + 3 * p[2], 1e-12) << "sample " << id;
+  }
+  EXPECT_NEAR(CellArray(curve, "Length")->GetTuple1(0), Norm(b - a), 1e-12 * Norm(b - a));
+  EXPECT_NEAR(CellArray(curve, "Tortuosity")->GetTuple1(0), 1.0, 1e-12);
+}
+
+/// Three points give the interpolating parabola (not-a-knot, the default): a
+/// planar curve whose third derivative vanishes, so torsion is exactly 0.
+void ExpectThreePointParabola(const Polyline& points, const std::string& name)
+{
+  SCOPED_TRACE(name);
+  const FilterRun run = RunCubic(PolylinesData({ points }));
+  ExpectNoMessages(run);
+  vtkPolyData* curve = run.Output;
+  ExpectAllFinite(curve);
+  const IdList line = LinesOf(curve).at(0);
+  ExpectDataPointsAmongSamples(points, curve, line, 10);
+  vtkDataArray* curvature = PointArray(curve, "Curvature");
+  for (const vtkIdType id : line)
+  {
+    EXPECT_GT(curvature->GetTuple1(id), 0.0) << "sample " << id;
+  }
+  // Every sample lies in the plane of the three points.
+  const Point planeNormal = Cross(points[1] - points[0], points[2] - points[0]);
+  for (const vtkIdType id : line)
+  {
+    EXPECT_NEAR(Dot(PointOf(curve, id) - points[0], planeNormal) / Norm(planeNormal), 0.0, 1e-12);
+  }
+  const double torsion = MaxAbs(PointArray(curve, "Torsion"), line);
+  Measure(name + "_max_abs_torsion", torsion);
+  EXPECT_EQ(torsion, 0.0);
+  ExpectOrthonormalFrames(curve, line);
+}
+
+TEST(CubicSplineFilter, ThreePointLineIsPlanarCurve)
+{
+  ExpectThreePointParabola({ { 0, 0, 0 }, { 1, 2, 0 }, { 3, 1, 0 } }, "three_points_z0");
+  ExpectThreePointParabola({ { 0, 0, 0 }, { 1, 2, 0.5 }, { 3, 1, 2 } }, "three_points_3d");
+}
+
+TEST(CubicSplineFilter, RepeatedPointsMerged)
+{
+  const Polyline clean = { { 0, 0, 0 }, { 1, 1, 0.2 }, { 2, 0.5, 0.7 }, { 3, 1.5, 0.4 },
+    { 4, 0.2, 1.0 } };
+  // Duplicates at the start, in the middle and at the end: 3 + 1 + 2 = 6 repeats.
+  const Polyline repeated = { clean[0], clean[0], clean[0], clean[0], clean[1], clean[2], clean[2],
+    clean[3], clean[4], clean[4], clean[4] };
+  const FilterRun withRepeats = RunCubic(PolylinesData({ clean, repeated }));
+  EXPECT_TRUE(withRepeats.Errors.empty()) << Joined(withRepeats.Errors);
+  EXPECT_EQ(CountMessages(withRepeats.Warnings, { "cell 1", "6 repeated point(s) merged" }), 1)
+    << Joined(withRepeats.Warnings);
+  EXPECT_EQ(withRepeats.Warnings.size(), 1u) << Joined(withRepeats.Warnings);
+  ExpectAllFinite(withRepeats.Output);
+
+  // Both cells are the same curve (Value interpolated along it alike).
+  vtkPolyData* curve = withRepeats.Output;
+  const auto lines = LinesOf(curve);
+  ASSERT_EQ(lines.size(), 2u);
+  ASSERT_EQ(lines[0].size(), lines[1].size());
+  for (size_t k = 0; k < lines[0].size(); ++k)
+  {
+    EXPECT_NEAR(Norm(PointOf(curve, lines[0][k]) - PointOf(curve, lines[1][k])), 0.0, 1e-12);
+    for (const auto& [name, components] : CurvePointArrays)
+    {
+      for (int c = 0; c < components; ++c)
+      {
+        EXPECT_NEAR(PointArray(curve, name)->GetComponent(lines[0][k], c),
+          PointArray(curve, name)->GetComponent(lines[1][k], c), 1e-12)
+          << name << " sample " << k;
+      }
+    }
+    EXPECT_NEAR(PointArray(curve, "Value")->GetTuple1(lines[0][k]),
+      PointArray(curve, "Value")->GetTuple1(lines[1][k]), 1e-12);
+  }
+  for (const char* name : CurveCellArrays)
+  {
+    EXPECT_NEAR(CellArray(curve, name)->GetTuple1(0), CellArray(curve, name)->GetTuple1(1), 1e-12)
+      << name;
+  }
+}
+
+TEST(CubicSplineFilter, NonLineCellsIgnored)
+{
+  PolyDataBuilder builder;
+  builder.Vertex({ 9, 9, 9 })
+    .Line(AkimaPoints())
+    .Polygon({ { 0, 0, 1 }, { 1, 0, 1 }, { 0, 1, 1 } })
+    .Strip({ { 0, 0, 2 }, { 1, 0, 2 }, { 0, 1, 2 }, { 1, 1, 2 } });
+  const auto input = builder.Build();
+  ASSERT_EQ(input->GetNumberOfCells(), 4);
+  const FilterRun run = RunCubic(input);
+  EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+  EXPECT_EQ(CountMessages(run.Warnings, { "3 non-line cells" }), 1) << Joined(run.Warnings);
+
+  vtkPolyData* curve = run.Output;
+  EXPECT_EQ(curve->GetNumberOfCells(), 1);
+  EXPECT_EQ(curve->GetNumberOfLines(), 1);
+  // The line is input cell 1 (verts come first): its cell data follows it.
+  EXPECT_EQ(CellArray(curve, "InputCellId")->GetTuple1(0), 1.0);
+  const FilterRun alone = RunCubic(PolylinesData({ AkimaPoints() }));
+  EXPECT_EQ(curve->GetNumberOfPoints(), alone.Output->GetNumberOfPoints());
+  ExpectDataPointsAmongSamples(AkimaPoints(), curve, LinesOf(curve).at(0), 10);
+}
+
+/// A line with a NaN and an Inf coordinate next to a good line; the parameter
+/// is the cell id of the bad line (0 or 1).
+class NonFiniteLine : public ::testing::TestWithParam<int>
+{
+};
+
+TEST_P(NonFiniteLine, SkippedWithErrorNamingCell)
+{
+  const int badCell = GetParam();
+  const Polyline good = AkimaPoints();
+  const Polyline bad = { { 0, 0, 0 }, { 1, NaN, 0 }, { 2, 1, 0 }, { Inf, 2, 1 }, { 4, 2, 0 } };
+  const auto input = PolylinesData(
+    badCell == 0 ? std::vector<Polyline>{ bad, good } : std::vector<Polyline>{ good, bad });
+  const FilterRun run = RunCubic(input);
+  EXPECT_EQ(run.Errors.size(), 1u) << Joined(run.Errors);
+  EXPECT_EQ(CountMessages(run.Errors, { "cell " + std::to_string(badCell), "not finite" }), 1)
+    << Joined(run.Errors);
+  EXPECT_TRUE(run.Warnings.empty()) << Joined(run.Warnings);
+
+  // The good line comes out as if it were alone, with its own cell data.
+  const FilterRun alone = RunCubic(PolylinesData({ good }));
+  vtkPolyData* curve = run.Output;
+  ExpectAllFinite(curve);
+  ASSERT_EQ(curve->GetNumberOfCells(), 1);
+  EXPECT_EQ(CellArray(curve, "InputCellId")->GetTuple1(0), static_cast<double>(1 - badCell));
+  // The rest is as if alone: Value = x + 2y + 3z interpolates alike whatever the point ids.
+  curve->GetCellData()->RemoveArray("InputCellId");
+  alone.Output->GetCellData()->RemoveArray("InputCellId");
+  ExpectPolyDataNear(alone.Output, curve, 1e-12, "good line next to a bad one");
+}
+
+INSTANTIATE_TEST_SUITE_P(CubicSplineFilter, NonFiniteLine, ::testing::Values(0, 1));
+
+// ===========================================================================
+// Planar and straight input.
+
+TEST(CubicSplineFilter, AkimaTorsionZero)
+{
+  const auto akima = ReadData("akima.vtp");
+  const FilterRun run = RunCubic(akima);
+  ExpectNoMessages(run);
+  const IdList line = LinesOf(run.Output).at(0);
+  const double torsion = MaxAbs(PointArray(run.Output, "Torsion"), line);
+  Measure("akima_max_abs_torsion", torsion);
+  EXPECT_LE(torsion, 1e-12);
+  ExpectOrthonormalFrames(run.Output, line);
+  // The frames of a z = 0 curve: binormal along +-z, where the curve bends.
+  vtkDataArray* curvature = PointArray(run.Output, "Curvature");
+  for (const vtkIdType id : line)
+  {
+    if (curvature->GetTuple1(id) > 0)
+    {
+      EXPECT_NEAR(std::abs(Vector(PointArray(run.Output, "Binormal"), id)[2]), 1.0, 1e-12);
+    }
+  }
+}
+
+/// A plane through Origin spanned by the orthogonal (not necessarily unit) U and V.
+struct TiltedPlane
+{
+  std::string Name;
+  Point Origin;
+  Point U;
+  Point V;
+};
+
+/**
+ * Places planar (x, y, 0) points in a tilted plane and checks that the cubic's
+ * torsion is only the rounding that the tilt brings.
+ *
+ * Model: the out-of-plane component w(t) of the spline is the cubic spline
+ * through the data's out-of-plane rounding, |w_i| <= delta; the moment
+ * equations bound its third derivative by 24 delta / h^3 (alternating noise on
+ * uniform knots is the worst case). To first order torsion = w''' /
+ * (kappa |s'|^2) plus terms of the same size, so with chord-length knots
+ * (|s'| near 1) |tau| kappa <= C delta / h_min^3; C = 100 leaves a factor 4
+ * for the speed and the other terms. delta is the data's measured distance
+ * from the plane, at least DBL_EPSILON times the coordinates (the spline's own
+ * rounding). Near an inflection kappa -> 0 and tau may grow like 1 / kappa:
+ * that is rounding, not a flaw, hence a bound on tau kappa rather than on tau.
+ */
+void ExpectTorsionOnlyFromRounding(const Polyline& planar, const TiltedPlane& plane)
+{
+  SCOPED_TRACE(plane.Name);
+  const Polyline points = InPlane(planar, plane.Origin, plane.U, plane.V);
+  const Point normal = (1.0 / Norm(Cross(plane.U, plane.V))) * Cross(plane.U, plane.V);
+
+  long double distance = 0;
+  double size = 0;
+  double shortest = std::numeric_limits<double>::max();
+  double diagonal = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    const Point& p = points[i];
+    long double offset = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      offset += (static_cast<long double>(p[c]) - plane.Origin[c]) * normal[c];
+      size = std::max(size, std::abs(p[c]));
+    }
+    distance = std::max(distance, std::abs(offset));
+    if (i > 0)
+    {
+      shortest = std::min(shortest, Norm(p - points[i - 1]));
+    }
+    for (const Point& q : points)
+    {
+      diagonal = std::max(diagonal, Norm(p - q));
+    }
+  }
+  const double delta =
+    std::max(static_cast<double>(distance), std::numeric_limits<double>::epsilon() * size);
+
+  const FilterRun run = RunCubic(PolylinesData({ points }));
+  ExpectNoMessages(run);
+  vtkPolyData* curve = run.Output;
+  const IdList line = LinesOf(curve).at(0);
+  ExpectOrthonormalFrames(curve, line);
+  vtkDataArray* curvature = PointArray(curve, "Curvature");
+  vtkDataArray* torsion = PointArray(curve, "Torsion");
+  double ratio = 0;
+  for (const vtkIdType id : line)
+  {
+    EXPECT_NEAR(Dot(PointOf(curve, id) - plane.Origin, normal), 0.0, 1e-12) << "sample " << id;
+    ratio = std::max(ratio,
+      std::abs(torsion->GetTuple1(id)) * curvature->GetTuple1(id) * std::pow(shortest, 3) / delta);
+  }
+  Measure(plane.Name + "_data_distance_from_plane", static_cast<double>(distance));
+  Measure(plane.Name + "_max_abs_torsion_times_size", MaxAbs(torsion, line) * diagonal);
+  Measure(plane.Name + "_max_tau_kappa_h3_over_delta", ratio);
+  EXPECT_LE(ratio, 100.0);
+}
+
+Polyline EllipticArc()
+{
+  Polyline arc;
+  for (int i = 0; i <= 8; ++i)
+  {
+    arc.push_back({ 5 * std::cos(0.2 * i), 3 * std::sin(0.2 * i), 0 });
+  }
+  return arc;
+}
+
+TEST(CubicSplineFilter, TiltedPlaneTorsionIsRoundingOnly)
+{
+  const Point origin = { 12.5, -7.25, 3.0 };
+  for (const auto& [name, points] :
+    { std::make_pair("arc", EllipticArc()), std::make_pair("akima", AkimaPoints()) })
+  {
+    const std::string prefix = std::string("tilted_") + name;
+    // Dyadic basis: the points lie exactly on the plane x + y + z = 8.25.
+    ExpectTorsionOnlyFromRounding(
+      points, { prefix + "_dyadic", origin, { 0.5, -0.5, 0 }, { 0.5, 0.5, -1 } });
+    // Orthonormal basis in thirds: the points leave the plane by rounding.
+    ExpectTorsionOnlyFromRounding(points,
+      { prefix + "_thirds", origin, { 1.0 / 3, 2.0 / 3, 2.0 / 3 },
+        { 2.0 / 3, 1.0 / 3, -2.0 / 3 } });
+  }
+}
+
+/// Five collinear, unevenly spaced points offset from the origin by the parameter.
+class CollinearLine : public ::testing::TestWithParam<double>
+{
+};
+
+TEST_P(CollinearLine, FlatFramesStayContinuous)
+{
+  const double offset = GetParam();
+  const Point direction = { 1.0 / 7, 3.0 / 7, 6.0 / 7 }; // |d| = sqrt(46)/7: not unit on purpose
+  const Point origin = { offset, -0.5 * offset, 0.25 * offset };
+  Polyline points;
+  for (const double s : { 0.0, 1.0, 3.0, 4.0, 7.5 })
+  {
+    points.push_back(origin + s * direction);
+  }
+  for (const int parameterization : { vtkShapeSplineFilter::UNIFORM,
+         vtkShapeSplineFilter::CHORD_LENGTH, vtkShapeSplineFilter::CENTRIPETAL })
+  {
+    const std::string name = std::string("collinear_offset_") +
+      std::to_string(static_cast<int>(offset)) + "_parameterization_" +
+      std::to_string(parameterization);
+    SCOPED_TRACE(name);
+    const FilterRun run = RunCubic(PolylinesData({ points }),
+      [&](vtkCubicSplineFilter* f) { f->SetParameterization(parameterization); });
+    ExpectNoMessages(run);
+    vtkPolyData* curve = run.Output;
+    ExpectAllFinite(curve);
+    const IdList line = LinesOf(curve).at(0);
+    const double curvature = MaxAbs(PointArray(curve, "Curvature"), line);
+    Measure(name + "_max_curvature", curvature);
+    // The points are collinear only up to the rounding of their coordinates
+    // (eps * |offset|), which the spline turns into curvature of order
+    // eps |p| / h^2 (h = 1 * |direction|, the shortest segment); it is reported as it
+    // is, far below anything real, while the frame ignores it (torsion 0, no flips).
+    const double shortest = std::sqrt(46.0) / 7;
+    const double rounding =
+      std::numeric_limits<double>::epsilon() * (std::abs(offset) + 7.5 * shortest);
+    EXPECT_LE(curvature, 1e3 * rounding / (shortest * shortest));
+    EXPECT_EQ(MaxAbs(PointArray(curve, "Torsion"), line), 0.0);
+    ExpectOrthonormalFrames(curve, line);
+    vtkDataArray* normal = PointArray(curve, "Normal");
+    double worstTurn = 0;
+    for (size_t k = 1; k < line.size(); ++k)
+    {
+      const double cosine = Dot(Vector(normal, line[k - 1]), Vector(normal, line[k]));
+      worstTurn = std::max(worstTurn, 1.0 - cosine);
+    }
+    Measure(name + "_max_normal_turn", worstTurn);
+    EXPECT_LT(worstTurn, 1e-9) << "the normal turns between consecutive samples";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CubicSplineFilter, CollinearLine, ::testing::Values(0.0, 1e3, 1e6));
+
+// ===========================================================================
+// vtkPolylineShapeAnalysis.
+
+/// The analysis of data alone, or audited against the cubic spline of data.
+FilterRun RunAnalysis(vtkPolyData* data, bool withCubic)
+{
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  vtkNew<vtkCubicSplineFilter> cubic;
+  analysis->SetInputData(data);
+  if (withCubic)
+  {
+    cubic->SetInputData(data);
+    analysis->SetCurveConnection(cubic->GetOutputPort());
+  }
+  return UpdateChecked(data, analysis, { analysis, cubic });
+}
+
+TEST(PolylineShapeAnalysis, AkimaDiscreteShape)
+{
+  const auto akima = ReadData("akima.vtp");
+  const FilterRun run = RunAnalysis(akima, false);
+  ExpectNoMessages(run);
+  vtkPolyData* out = run.Output;
+  ASSERT_EQ(out->GetNumberOfPoints(), 11);
+  const std::vector<std::pair<const char*, int>> arrays = { { "DiscreteCurvature", 1 },
+    { "DiscreteTorsion", 1 }, { "DiscreteBinormal", 3 }, { "Collinear", 1 }, { "Convex", 1 },
+    { "Coplanar", 1 } };
+  for (const auto& [name, components] : arrays)
+  {
+    vtkDataArray* array = PointArray(out, name);
+    ASSERT_NE(array, nullptr);
+    EXPECT_EQ(array->GetNumberOfComponents(), components) << name;
+    EXPECT_EQ(array->GetNumberOfTuples(), 11) << name;
+  }
+  EXPECT_EQ(out->GetPointData()->GetArray("ViolationMask"), nullptr) << "no audit without a curve";
+
+  // y = 10 for points 0..5: the interior points 1..4 are collinear, nothing else.
+  vtkDataArray* collinear = PointArray(out, "Collinear");
+  vtkDataArray* convex = PointArray(out, "Convex");
+  for (vtkIdType i = 0; i < 11; ++i)
+  {
+    EXPECT_EQ(collinear->GetTuple1(i), (i >= 1 && i <= 4) ? 1.0 : 0.0) << "point " << i;
+    EXPECT_EQ(convex->GetTuple1(i), (i >= 5 && i <= 9) ? 1.0 : 0.0) << "point " << i;
+  }
+  EXPECT_EQ(
+    MaxAbs(PointArray(out, "DiscreteTorsion"), IdList{ 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10 }), 0.0);
+}
+
+TEST(PolylineShapeAnalysis, HelixDiscreteCurvatureAndTorsion)
+{
+  const auto helix = ReadData("helix.vtp");
+  const FilterRun run = RunAnalysis(helix, false);
+  ExpectNoMessages(run);
+  vtkDataArray* curvature = PointArray(run.Output, "DiscreteCurvature");
+  vtkDataArray* torsion = PointArray(run.Output, "DiscreteTorsion");
+  ASSERT_TRUE(curvature && torsion);
+
+  // Menger curvature of three consecutive helix points, 1 / circumradius
+  // = 2 |a x b| / (|a| |b| |a + b|): the same at every interior point. With 8
+  // points per turn it is 1.05% below the helix's 0.4, hence the 5% bound.
+  const Point before = HelixPoint(0) - HelixPoint(-HelixStep);
+  const Point after = HelixPoint(HelixStep) - HelixPoint(0);
+  const double menger =
+    2 * Norm(Cross(before, after)) / (Norm(before) * Norm(after) * Norm(before + after));
+  Measure("helix_menger_relative_to_0.4", menger / HelixCurvature - 1);
+  double worst = 0;
+  for (vtkIdType i = 1; i < 32; ++i)
+  {
+    EXPECT_NEAR(curvature->GetTuple1(i), menger, 1e-12) << "point " << i;
+    worst = std::max(worst, std::abs(curvature->GetTuple1(i) / HelixCurvature - 1));
+  }
+  Measure("helix_discrete_curvature_max_relative_error", worst);
+  EXPECT_LT(worst, 0.05);
+  EXPECT_EQ(curvature->GetTuple1(0), 0.0);
+  EXPECT_EQ(curvature->GetTuple1(32), 0.0);
+
+  // The segments with interior points at both ends (1..30) twist right-handedly.
+  for (vtkIdType i = 1; i <= 30; ++i)
+  {
+    EXPECT_GT(torsion->GetTuple1(i), 0.0) << "segment " << i;
+  }
+  EXPECT_EQ(torsion->GetTuple1(0), 0.0);
+  EXPECT_EQ(torsion->GetTuple1(31), 0.0);
+}
+
+TEST(PolylineShapeAnalysis, CubicBreaksAkimaShape)
+{
+  const auto akima = ReadData("akima.vtp");
+  const FilterRun run = RunAnalysis(akima, true);
+  ExpectNoMessages(run);
+  const double violations = CellArray(run.Output, "ShapeViolations")->GetTuple1(0);
+  Measure("akima_analysis_shape_violations", violations);
+  EXPECT_GT(violations, 0);
+  EXPECT_EQ(CellArray(run.Output, "ShapePreserving")->GetTuple1(0), 0.0);
+  vtkDataArray* mask = PointArray(run.Output, "ViolationMask");
+  ASSERT_NE(mask, nullptr);
+  int flagged = 0;
+  for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+  {
+    flagged += mask->GetTuple1(i) != 0;
+  }
+  Measure("akima_analysis_flagged_segments", flagged);
+  EXPECT_GT(flagged, 0);
+
+  // The spline filter's own audit agrees that the shape is broken.
+  const FilterRun cubic = RunCubic(akima);
+  const double own = CellArray(cubic.Output, "ShapeViolations")->GetTuple1(0);
+  Measure("akima_filter_shape_violations", own);
+  EXPECT_GT(own, 0);
+  EXPECT_EQ(CellArray(cubic.Output, "ShapePreserving")->GetTuple1(0), 0.0);
+}
+
+TEST(PolylineShapeAnalysis, CubicKeepsHelixShape)
+{
+  const auto helix = ReadData("helix.vtp");
+  const FilterRun run = RunAnalysis(helix, true);
+  ExpectNoMessages(run);
+  EXPECT_EQ(CellArray(run.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CellArray(run.Output, "ShapePreserving")->GetTuple1(0), 1.0);
+  vtkDataArray* mask = PointArray(run.Output, "ViolationMask");
+  ASSERT_NE(mask, nullptr);
+  for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+  {
+    EXPECT_EQ(mask->GetTuple1(i), 0.0) << "point " << i;
+  }
+  const FilterRun cubic = RunCubic(helix);
+  EXPECT_EQ(CellArray(cubic.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+}
+
+// ===========================================================================
+// Properties: PrintSelf and clamping.
+
+template <typename Filter>
+void ExpectPrintSelfMentions(Filter* filter, const std::vector<std::string>& names)
+{
+  std::ostringstream text;
+  filter->Print(text);
+  for (const std::string& name : names)
+  {
+    EXPECT_NE(text.str().find(name + ":"), std::string::npos) << name << " missing from\n"
+                                                              << text.str();
+  }
+}
+
+TEST(Properties, PrintSelfMentionsEveryProperty)
+{
+  vtkNew<vtkCubicSplineFilter> cubic;
+  ExpectPrintSelfMentions(cubic.Get(),
+    { "EndCondition", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
+      "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames" });
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  ExpectPrintSelfMentions(
+    analysis.Get(), { "Closed", "DataShapeTolerance", "CurveShapeTolerance" });
+}
+
+TEST(Properties, ClampMacrosClamp)
+{
+  vtkNew<vtkCubicSplineFilter> f;
+  EXPECT_EQ(f->GetNumberOfSubdivisions(), 10);
+  f->SetNumberOfSubdivisions(0);
+  EXPECT_EQ(f->GetNumberOfSubdivisions(), 1);
+  f->SetNumberOfSubdivisions(1000000);
+  EXPECT_EQ(f->GetNumberOfSubdivisions(), 100000);
+  f->SetEndCondition(-1);
+  EXPECT_EQ(f->GetEndCondition(), vtkCubicSplineFilter::NATURAL);
+  f->SetEndCondition(7);
+  EXPECT_EQ(f->GetEndCondition(), vtkCubicSplineFilter::CLAMPED);
+  f->SetParameterization(9);
+  EXPECT_EQ(f->GetParameterization(), vtkShapeSplineFilter::CENTRIPETAL);
+  f->SetParameterization(-2);
+  EXPECT_EQ(f->GetParameterization(), vtkShapeSplineFilter::UNIFORM);
+  f->SetSamplingMode(5);
+  EXPECT_EQ(f->GetSamplingMode(), vtkShapeSplineFilter::ARC_LENGTH);
+  f->SetSampleLength(-1.0);
+  EXPECT_GT(f->GetSampleLength(), 0.0);
+  f->SetDataShapeTolerance(2.0);
+  EXPECT_EQ(f->GetDataShapeTolerance(), 1.0);
+  f->SetCurveShapeTolerance(-0.5);
+  EXPECT_EQ(f->GetCurveShapeTolerance(), 0.0);
+
+  vtkNew<vtkPolylineShapeAnalysis> a;
+  a->SetDataShapeTolerance(-1.0);
+  EXPECT_EQ(a->GetDataShapeTolerance(), 0.0);
+  a->SetCurveShapeTolerance(3.0);
+  EXPECT_EQ(a->GetCurveShapeTolerance(), 1.0);
+}
+
+// ===========================================================================
+// Parallel execution.
+
+/// splitmix64: the same numbers on every platform.
+class Random
+{
+public:
+  explicit Random(std::uint64_t seed)
+    : State(seed)
+  {
+  }
+  std::uint64_t Next()
+  {
+    std::uint64_t z = (this->State += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  /// Uniform in [lo, hi).
+  double Uniform(double lo, double hi)
+  {
+    return lo + (hi - lo) * static_cast<double>(this->Next() >> 11) * 0x1.0p-53;
+  }
+
+private:
+  std::uint64_t State;
+};
+
+/// count random walks of 2..40 points; some closed by a repeated id, some with repeats.
+vtkSmartPointer<vtkPolyData> RandomLines(int count)
+{
+  Random random(20240531);
+  PolyDataBuilder builder;
+  for (int l = 0; l < count; ++l)
+  {
+    Polyline walk = { { random.Uniform(-50, 50), random.Uniform(-50, 50),
+      random.Uniform(-50, 50) } };
+    const int size = 2 + static_cast<int>(random.Next() % 39);
+    while (static_cast<int>(walk.size()) < size)
+    {
+      walk.push_back(
+        walk.back() + Point{ random.Uniform(-1, 1), random.Uniform(-1, 1), random.Uniform(-1, 1) });
+      if (l % 11 == 0 && walk.size() == 3)
+      {
+        walk.push_back(walk.back());
+      }
+    }
+    IdList ids = builder.AddPoints(walk);
+    if (l % 7 == 0 && ids.size() >= 3)
+    {
+      ids.push_back(ids.front());
+    }
+    builder.LineIds(ids);
+  }
+  return builder.Build();
+}
+
+/// Selects an SMP backend (and thread count) for its lifetime.
+class BackendScope
+{
+public:
+  BackendScope(const char* backend, int threads)
+    : Previous(vtkSMPTools::GetBackend())
+  {
+    this->Selected = vtkSMPTools::SetBackend(backend);
+    vtkSMPTools::Initialize(threads);
+  }
+  ~BackendScope()
+  {
+    vtkSMPTools::SetBackend(this->Previous.c_str());
+    vtkSMPTools::Initialize();
+  }
+  BackendScope(const BackendScope&) = delete;
+  BackendScope& operator=(const BackendScope&) = delete;
+
+  bool Selected = false;
+
+private:
+  std::string Previous;
+};
+
+TEST(Parallel, SameOutputWithThreadsAndSequential)
+{
+  const auto input = RandomLines(200);
+  ASSERT_EQ(input->GetNumberOfLines(), 200);
+  vtkNew<vtkCubicSplineFilter> filter;
+  filter->SetInputData(input);
+  MessageLog log({ filter });
+
+  auto runWith = [&](const char* backend) {
+    BackendScope scope(backend, 4);
+    EXPECT_TRUE(scope.Selected) << backend << " backend not available";
+    EXPECT_STREQ(vtkSMPTools::GetBackend(), backend);
+    if (std::string(backend) == "STDThread")
+    {
+      EXPECT_GT(vtkSMPTools::GetEstimatedNumberOfThreads(), 1);
+    }
+    filter->Modified();
+    filter->Update();
+    return DeepCopy(filter->GetOutput());
+  };
+  const auto sequential = runWith("Sequential");
+  const auto sequentialWarnings = log.Warnings;
+  EXPECT_EQ(sequential->GetNumberOfLines(), 200);
+  ExpectAllFinite(sequential);
+  // Repeats and two-point lines warn, in cell order whatever the backend.
+  EXPECT_FALSE(sequentialWarnings.empty());
+  for (int trial = 0; trial < 3; ++trial)
+  {
+    SCOPED_TRACE("STDThread run " + std::to_string(trial));
+    log.Warnings.clear();
+    const auto threaded = runWith("STDThread");
+    EXPECT_EQ(sequentialWarnings, log.Warnings);
+    ExpectPolyDataNear(sequential, threaded, 0.0, "STDThread vs Sequential");
+  }
+  EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
+}
+} // namespace
