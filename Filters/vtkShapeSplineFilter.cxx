@@ -43,6 +43,24 @@ vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkId
   return array;
 }
 
+std::vector<LineWork> GatherLines(vtkPolyData* input)
+{
+  std::vector<LineWork> lines(input->GetNumberOfLines());
+  // Cell ids count vertices first, then lines.
+  const vtkIdType firstLineId = input->GetNumberOfVerts();
+  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  vtkIdType k = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+  {
+    vtkIdType npts;
+    const vtkIdType* ids;
+    it->GetCurrentCell(npts, ids);
+    lines[k].CellId = firstLineId + k;
+    lines[k].PointIds.assign(ids, ids + npts);
+  }
+  return lines;
+}
+
 template <typename Array>
 vtkSmartPointer<Array> Renamed(Array* source, const char* name)
 {
@@ -96,21 +114,7 @@ int vtkShapeSplineFilter::RequestData(
   }
 
   // Gather the lines serially; fit them in parallel; assemble serially.
-  std::vector<LineWork> lines(input->GetNumberOfLines());
-  {
-    const vtkIdType firstLineId = input->GetNumberOfVerts();
-    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-    vtkIdType k = 0;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
-    {
-      vtkIdType npts;
-      const vtkIdType* ids;
-      it->GetCurrentCell(npts, ids);
-      lines[k].CellId = firstLineId + k;
-      lines[k].PointIds.assign(ids, ids + npts);
-    }
-  }
-
+  std::vector<LineWork> lines = GatherLines(input);
   shapesplines::FitOptions options;
   options.Knots = static_cast<shapesplines::Parameterization>(this->Parameterization);
   options.Closed = this->Closed;
@@ -150,6 +154,10 @@ int vtkShapeSplineFilter::RequestData(
       }
     }
   });
+  if (this->GetAbortExecute())
+  {
+    return 1; // an aborted run leaves the output empty
+  }
   this->UpdateProgress(0.8);
 
   vtkIdType outputSize = 0;
