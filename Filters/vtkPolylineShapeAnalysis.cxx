@@ -199,6 +199,7 @@ int vtkPolylineShapeAnalysis::RequestData(
       continue;
     }
     shapesplines::ShapeAudit result;
+    bool audited = false;
     if (finite && l < curves.size() && data.numberOfSpans() > 0)
     {
       bool curveClosed = false;
@@ -217,17 +218,19 @@ int vtkPolylineShapeAnalysis::RequestData(
       else
       {
         result = shapesplines::auditShape(data, shape, samples, tolerances);
+        audited = true;
         for (size_t j = 0; j < result.SpanMask.size(); ++j)
         {
           mask->SetValue(ids[data.SourceIndex[j]], static_cast<int>(result.SpanMask[j]));
         }
       }
     }
-    total->InsertNextValue(result.violations());
-    preserving->InsertNextValue(result.preserving() ? 1 : 0);
+    // A line that could not be audited must not read as shape-preserving.
+    total->InsertNextValue(audited ? result.violations() : -1);
+    preserving->InsertNextValue(audited && result.preserving() ? 1 : 0);
     for (int c = 0; c < criteria; ++c)
     {
-      counts[c]->InsertNextValue(result.Failures[c]);
+      counts[c]->InsertNextValue(audited ? result.Failures[c] : -1);
     }
   }
 

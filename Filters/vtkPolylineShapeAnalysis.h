@@ -19,8 +19,10 @@
  * array ViolationMask on each segment's start point (bit 0 collinearity,
  * 1 convexity at knot, 2 convexity on span, 3 coplanarity, 4 torsion sign at
  * knot, 5 torsion sign on span) and cell arrays ShapeViolations,
- * ShapePreserving and one count per criterion. The audit sees the curve only
- * at its samples: sample densely enough.
+ * ShapePreserving and one count per criterion (-1 and 0 for a line that could
+ * not be audited: a curve line missing, non-finite data, or a curve whose spans
+ * or closure do not match the data). The audit sees the curve only at its
+ * samples: sample densely enough.
  *
  * @sa vtkShapeSplineFilter vtkCubicSplineFilter
  */

@@ -61,6 +61,62 @@ std::vector<LineWork> GatherLines(vtkPolyData* input)
   return lines;
 }
 
+/**
+ * The input point arrays on the samples: floating-point arrays interpolated
+ * linearly along each span; integer and other arrays (ids, labels, flags) taken
+ * from the nearer data point, since a value between two ids means nothing.
+ */
+class PointArrayTransfer
+{
+public:
+  PointArrayTransfer(vtkPointData* input, vtkIdType size)
+  {
+    for (int a = 0; a < input->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* source = input->GetAbstractArray(a);
+      auto target = vtk::TakeSmartPointer(source->NewInstance());
+      target->SetName(source->GetName());
+      target->SetNumberOfComponents(source->GetNumberOfComponents());
+      target->SetNumberOfTuples(size);
+      const int type = source->GetDataType();
+      this->Arrays.push_back({ source, target, type == VTK_FLOAT || type == VTK_DOUBLE });
+    }
+  }
+
+  /// Sample `to` lies at fraction t in [0, 1] of the span between data points a and b.
+  void Interpolate(vtkIdType to, vtkIdType a, vtkIdType b, double t)
+  {
+    for (const Transfer& x : this->Arrays)
+    {
+      if (x.Linear)
+      {
+        x.Target->InterpolateTuple(to, a, x.Source, b, x.Source, t);
+      }
+      else
+      {
+        x.Target->SetTuple(to, t < 0.5 ? a : b, x.Source);
+      }
+    }
+  }
+
+  void AddTo(vtkPointData* output) const
+  {
+    for (const Transfer& x : this->Arrays)
+    {
+      output->AddArray(x.Target);
+    }
+  }
+
+private:
+  struct Transfer
+  {
+    vtkAbstractArray* Source;
+    vtkSmartPointer<vtkAbstractArray> Target;
+    bool Linear;
+  };
+  std::vector<Transfer> Arrays;
+};
+
 template <typename Array>
 vtkSmartPointer<Array> Renamed(Array* source, const char* name)
 {
@@ -198,7 +254,7 @@ int vtkShapeSplineFilter::RequestData(
   vtkPointData* outPD = output->GetPointData();
   vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
-  outPD->InterpolateAllocate(inPD, outputSize);
+  PointArrayTransfer carried(inPD, outputSize);
   outCD->CopyAllocate(inCD, static_cast<vtkIdType>(lines.size()));
 
   vtkNew<vtkPoints> outPoints;
@@ -238,7 +294,7 @@ int vtkShapeSplineFilter::RequestData(
       for (const vtkIdType id : line.PointIds)
       {
         outPoints->SetPoint(next, input->GetPoint(id));
-        outPD->CopyData(inPD, id, next);
+        carried.Interpolate(next, id, id, 0.0);
         const double zero[3] = { 0, 0, 0 };
         for (vtkDoubleArray* a : std::initializer_list<vtkDoubleArray*>{
                curvature, torsion, tangent, normal, binormal, parameter, arcLength })
@@ -260,7 +316,7 @@ int vtkShapeSplineFilter::RequestData(
         const double fraction = (samples.Parameter[s] - t0) / (fit.Knots[span + 1] - t0);
         const vtkIdType from = line.PointIds[fit.Data.SourceIndex[span]];
         const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
-        outPD->InterpolateEdge(inPD, next, from, to, fraction);
+        carried.Interpolate(next, from, to, fraction);
         outPoints->SetPoint(next, samples.Values[s][0].data());
         const auto& frame = fit.Frames[s];
         curvature->SetValue(next, frame.Curvature);
@@ -296,13 +352,14 @@ int vtkShapeSplineFilter::RequestData(
 
   output->SetPoints(outPoints);
   output->SetLines(outLines);
+  // Input arrays first: ours replace any of the same name.
+  carried.AddTo(outPD);
   for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ curvature, torsion,
          tangent, normal, binormal, parameter, arcLength, spanIndex })
   {
     outPD->AddArray(a);
   }
   outPD->SetActiveScalars("Torsion");
-  outPD->SetActiveNormals("Normal");
   if (this->VMTKArrayNames)
   {
     outPD->AddArray(Renamed(tangent.Get(), "FrenetTangent"));

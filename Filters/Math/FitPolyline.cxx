@@ -48,6 +48,7 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 {
   SamplingOptions uniform;
   uniform.Subdivisions = subdivisions;
+  uniform.MeasureArcLength = false;
   const CurveSamples samples = sampleCurve(curve, uniform);
   const auto frames =
     frenetFrames(samples.Values, flatCurvature(curve, samples, data, coordinateNoise));
@@ -108,6 +109,20 @@ FittedPolyline fitPolyline(
     fit.Spline = build(fit.Data, fit.Knots);
   }
   sampleAndAudit(fit, options);
+  // The knot samples are the data points, exactly (not shifted there and back).
+  CurveSamples& samples = fit.Samples;
+  for (int k = 0; k < samples.size(); ++k)
+  {
+    const int span = samples.Span[k];
+    if (samples.Parameter[k] == fit.Knots[span])
+    {
+      samples.Values[k][0] = points[fit.Data.SourceIndex[span]];
+    }
+  }
+  if (!fit.Data.Closed)
+  {
+    samples.Values.back()[0] = points[fit.Data.SourceIndex.back()];
+  }
   return fit;
 }
 } // namespace shapesplines

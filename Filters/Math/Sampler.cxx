@@ -76,19 +76,17 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
 {
   const int spans = curve.numberOfSpans();
   const auto& knots = curve.knots();
-  std::vector<double> lengths(spans);
-  double total = 0.0;
-  for (int j = 0; j < spans; ++j)
-  {
-    lengths[j] = spanLength(curve, j);
-    total += lengths[j];
-  }
-
   CurveSamples samples;
-  samples.Length = total;
   std::vector<long> perSpan(spans, std::max(1, options.Subdivisions));
+  std::vector<double> lengths(spans);
   if (options.SampleMode == SamplingOptions::Mode::ArcLength)
   {
+    double total = 0.0;
+    for (int j = 0; j < spans; ++j)
+    {
+      lengths[j] = spanLength(curve, j);
+      total += lengths[j];
+    }
     double spacing = options.TargetLength;
     const double budget = static_cast<double>(options.MaximumSamples - spans - 1);
     if (!(spacing > 0) || total / spacing > budget)
@@ -125,6 +123,10 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
     addSample(spans - 1, knots[spans]);
   }
 
+  if (!options.MeasureArcLength)
+  {
+    return samples;
+  }
   samples.ArcLength.resize(samples.size(), 0.0);
   for (int k = 1; k < samples.size(); ++k)
   {
@@ -133,6 +135,11 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
     const double end = samples.Span[k] == span ? samples.Parameter[k] : knots[span + 1];
     samples.ArcLength[k] =
       samples.ArcLength[k - 1] + arcLength(curve, span, samples.Parameter[k - 1], end);
+  }
+  samples.Length = samples.ArcLength.back();
+  if (curve.isClosed())
+  {
+    samples.Length += arcLength(curve, spans - 1, samples.Parameter.back(), knots[spans]);
   }
   return samples;
 }

@@ -20,6 +20,8 @@ struct SamplingOptions
   double TargetLength = 1.0;
   /// Upper bound on samples per curve; the arc-length spacing grows to respect it.
   long MaximumSamples = 10000000;
+  /// Fill CurveSamples::ArcLength and Length (the shape audit does not need them).
+  bool MeasureArcLength = true;
 };
 
 /**

@@ -13,6 +13,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -554,8 +555,8 @@ void ExpectDataPointsAmongSamples(
   ASSERT_EQ(line.size(), (data.size() - 1) * subdivisions + 1);
   for (size_t k = 0; k < data.size(); ++k)
   {
-    const Point sample = PointOf(curve, line[k * subdivisions]);
-    EXPECT_NEAR(Norm(sample - data[k]), 0.0, 1e-12) << "data point " << k;
+    // Exactly: the data points are returned bit for bit, not recomputed.
+    EXPECT_EQ(PointOf(curve, line[k * subdivisions]), data[k]) << "data point " << k;
   }
 }
 
@@ -696,6 +697,40 @@ TEST(CubicSplineFilter, DataPointsAmongSamplesForAnySubdivisions)
       RunCubic(helix, [&](vtkCubicSplineFilter* f) { f->SetNumberOfSubdivisions(subdivisions); });
     ExpectNoMessages(run);
     ExpectDataPointsAmongSamples(data, run.Output, LinesOf(run.Output)[0], subdivisions);
+  }
+}
+
+TEST(CubicSplineFilter, IntegerArraysTakeTheNearerDataPointFloatArraysInterpolate)
+{
+  const Polyline points = { { 0, 0, 0 }, { 1, 0.5, 0 }, { 2, 0, 0.5 }, { 3, 1, 0 } };
+  const auto input = PolyDataBuilder().Line(points).Build();
+  vtkNew<vtkIntArray> labels; // an id-like integer array: 10 * point id
+  labels->SetName("Label");
+  for (int i = 0; i < 4; ++i)
+  {
+    labels->InsertNextValue(10 * i);
+  }
+  input->GetPointData()->AddArray(labels);
+  const FilterRun run = RunCubic(input, [](vtkCubicSplineFilter* f) {
+    f->SetParameterizationToUniform(); // parameter fraction = sample index / 4
+    f->SetNumberOfSubdivisions(4);
+  });
+  ExpectNoMessages(run);
+  vtkDataArray* label = PointArray(run.Output, "Label");
+  vtkDataArray* value = PointArray(run.Output, "Value");
+  ASSERT_TRUE(label && value);
+  EXPECT_EQ(label->GetDataType(), VTK_INT);
+  const IdList line = LinesOf(run.Output)[0];
+  for (size_t k = 0; k < line.size(); ++k)
+  {
+    const size_t span = std::min<size_t>(k / 4, 2);
+    const double fraction = (static_cast<double>(k) - 4.0 * span) / 4.0;
+    const double nearer = 10.0 * (fraction < 0.5 ? span : span + 1);
+    EXPECT_EQ(label->GetTuple1(line[k]), nearer) << "sample " << k;
+    const Point a = points[span], b = points[span + 1];
+    const double linear = (1 - fraction) * (a[0] + 2 * a[1] + 3 * a[2]) +
+      fraction * (b[0] + 2 * b[1] + 3 * b[2]);
+    EXPECT_NEAR(value->GetTuple1(line[k]), linear, 1e-12) << "sample " << k;
   }
 }
 

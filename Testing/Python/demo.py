@@ -1,0 +1,295 @@
+"""ShapeSplines demo: cubic splines, curvature and torsion of the aorta centerlines and Akima's data.
+
+Run as
+    xvfb-run -a pvpython demo.py --plugin ShapeSplines.so --data Data --output DIR
+
+Runs the CubicSpline filter on Data/aorta-centerline.vtp and Data/akima.vtp and
+PolylineShapeAnalysis on the same data with the spline as its Curve input, and
+writes into DIR (created if missing):
+  aorta-cubic.vtp, aorta-analysis.vtp, akima-cubic.vtp, akima-analysis.vtp
+  aorta-torsion.png            the aorta curves as tubes coloured by torsion
+                               (Cool to Warm, symmetric range clipped to the 95th
+                               percentile of |torsion|), data points as dots
+  aorta-curvature-torsion.png  curvature and torsion against arc length along
+                               line 0 (two ParaView line charts)
+  akima-curvature.png          Akima's data points and polygon, and the cubic
+                               coloured by curvature
+It prints a summary per line and the absolute path of every file written.
+"""
+import argparse
+import os
+import sys
+import time
+
+import numpy as np
+
+from paraview import servermanager
+from paraview.simple import (AssignViewToLayout, ColorBy, CreateLayout, CreateView, Delete, ExtractSelection,
+                             GetColorTransferFunction, GetScalarBar, IDSelectionSource, LoadPlugin, PassArrays,
+                             Render, SaveData, SaveScreenshot, Show, Text, Tube, XMLPolyDataReader)
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+START = time.time()
+parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+parser.add_argument("--plugin", required=True, help="path of ShapeSplines.so")
+parser.add_argument("--data", required=True, help="folder holding aorta-centerline.vtp and akima.vtp")
+parser.add_argument("--output", required=True, help="folder for the .vtp and .png files (created if missing)")
+args = parser.parse_args()
+
+if not os.path.isfile(args.plugin):
+    raise SystemExit("plugin not found: %s" % args.plugin)
+output_dir = os.path.abspath(args.output)
+os.makedirs(output_dir, exist_ok=True)
+LoadPlugin(args.plugin, remote=False, ns=globals())
+
+TORSION_PERCENTILE = 95  # colour range of aorta-torsion.png: +- this percentile of |torsion|
+AKIMA_X_STRETCH = 4.0
+written = []
+
+
+def out_path(name):
+    path = os.path.join(output_dir, name)
+    written.append(path)
+    return path
+
+
+def reader(name):
+    path = os.path.join(args.data, name)
+    if not os.path.isfile(path):
+        raise SystemExit("data file not found: %s" % path)
+    return XMLPolyDataReader(FileName=[path])
+
+
+def array(data, name, cells=False):
+    attributes = data.GetCellData() if cells else data.GetPointData()
+    a = attributes.GetArray(name)
+    if a is None:
+        raise RuntimeError("array %s missing from %s" % (name, data.GetClassName()))
+    return vtk_to_numpy(a)
+
+
+def line_ids(data):
+    cells = data.GetLines()
+    offsets = vtk_to_numpy(cells.GetOffsetsArray())
+    connectivity = vtk_to_numpy(cells.GetConnectivityArray())
+    return [connectivity[offsets[i]:offsets[i + 1]] for i in range(len(offsets) - 1)]
+
+
+def white_render_view(width, height):
+    view = CreateView("RenderView")
+    view.ViewSize = [width, height]
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    return view
+
+
+def place_parallel_camera(view, bounds, box_x, box_y, width, height, stretch=1.0):
+    """Looks down -z with a parallel camera so that bounds (x stretched) fill the pixel box."""
+    Render(view)  # paraview.simple resets the camera on a view's first render
+    x0, x1, y0, y1, z0, z1 = bounds
+    x0, x1 = stretch * x0, stretch * x1
+    units_per_pixel = max((x1 - x0) / (box_x[1] - box_x[0]), (y1 - y0) / (box_y[1] - box_y[0]))
+    cx = 0.5 * (x0 + x1) + (0.5 * width - 0.5 * sum(box_x)) * units_per_pixel
+    cy = 0.5 * (y0 + y1) + (0.5 * height - 0.5 * sum(box_y)) * units_per_pixel
+    cz = 0.5 * (z0 + z1)
+    view.InteractionMode = "2D"
+    view.CameraParallelProjection = 1
+    view.CameraFocalPoint = [cx, cy, cz]
+    view.CameraPosition = [cx, cy, cz + 10 * (y1 - y0 + x1 - x0 + z1 - z0)]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraParallelScale = 0.5 * height * units_per_pixel
+    Render(view)
+
+
+def style_scalar_bar(bar, title, position, length, fmt, font=16):
+    bar.Visibility = 1
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.HorizontalTitle = 1
+    bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    bar.TitleFontSize = font + 2
+    bar.LabelFontSize = font
+    bar.WindowLocation = "Any Location"
+    bar.Position = position
+    bar.ScalarBarLength = length
+    bar.ScalarBarThickness = 16
+    bar.AutomaticLabelFormat = 0
+    bar.LabelFormat = fmt
+    bar.RangeLabelFormat = fmt
+
+
+def caption(view, text, size=15):
+    shown = Show(Text(Text=text), view)
+    shown.WindowLocation = "Upper Left Corner"
+    shown.FontSize = size
+    shown.Color = [0.0, 0.0, 0.0]
+    shown.Justification = "Left"
+    return shown
+
+
+# =========================================================================== filters
+results = {}
+for key, file_name in (("aorta", "aorta-centerline.vtp"), ("akima", "akima.vtp")):
+    src = reader(file_name)
+    cubic = CubicSpline(Input=src)  # defaults: Not A Knot, Chord Length, 10 samples per span
+    analysis = PolylineShapeAnalysis(Input=src, Curve=cubic)
+    analysis.UpdatePipeline()
+    SaveData(out_path("%s-cubic.vtp" % key), proxy=cubic)
+    SaveData(out_path("%s-analysis.vtp" % key), proxy=analysis)
+    results[key] = (src, cubic, analysis, servermanager.Fetch(src), servermanager.Fetch(cubic),
+                    servermanager.Fetch(analysis))
+
+# =========================================================================== summary
+print("Cubic spline (Not A Knot, Chord Length, 10 samples per span) and its shape audit")
+for key, (src, cubic, analysis, data, curve, audit) in results.items():
+    curvature, torsion = array(curve, "Curvature"), array(curve, "Torsion")
+    length, violations = array(curve, "Length", True), array(curve, "ShapeViolations", True)
+    seen = array(audit, "ShapeViolations", True)
+    data_lines, curve_lines = line_ids(data), line_ids(curve)
+    for i, (data_ids, curve_ids) in enumerate(zip(data_lines, curve_lines)):
+        k, t = curvature[curve_ids], torsion[curve_ids]
+        print("  %s line %d: %d points, %d samples, length %.4g, max curvature %.4g, torsion %.4g .. %.4g "
+              "(98th percentile of |torsion| %.4g), ShapeViolations %d (analysis of the output curve: %d)"
+              % (key, i, len(data_ids), len(curve_ids), length[i], k.max(), t.min(), t.max(),
+                 np.percentile(np.abs(t), 98), violations[i], seen[i]))
+print("  (the filter audits its curve at 16 samples per span; PolylineShapeAnalysis sees only the output's "
+      "10 per span)")
+
+# =========================================================================== aorta-curvature-torsion.png
+# (Made before the render views: after a render view's screenshot, the charts in
+# this layout came out with their axis labels cut by the axis titles.)
+src, cubic, analysis, data, curve, audit = results["aorta"]
+line0 = ExtractSelection(Input=cubic, Selection=IDSelectionSource(IDs=[0, 0], FieldType="CELL"))
+line0.UpdatePipeline()
+line0_data = servermanager.Fetch(line0)
+arc = array(line0_data, "ArcLength")
+k0, t0 = array(line0_data, "Curvature"), array(line0_data, "Torsion")
+k_top = float(np.percentile(k0, 99.5) * 1.2)
+t_lim = float(np.percentile(np.abs(t0), 98))
+layout = CreateLayout("aorta line 0")
+curvature_view = CreateView("XYChartView")
+torsion_view = CreateView("XYChartView")
+AssignViewToLayout(curvature_view, layout, 0)
+layout.SplitVertical(0, 0.5)
+AssignViewToLayout(curvature_view, layout, 1)
+AssignViewToLayout(torsion_view, layout, 2)
+charts = (
+    (curvature_view, "Curvature", [0.0, k_top], ["0.1", "0.25", "0.8"],
+     "Curvature along aorta line 0 (cubic spline; axis cut at %.3g, max %.3g at s = %.1f)"
+     % (k_top, k0.max(), arc[np.argmax(k0)])),
+    (torsion_view, "Torsion", [-t_lim, t_lim], ["0.8", "0.1", "0.1"],
+     "Torsion along aorta line 0 (axis cut at +-%.3g, the 98th percentile of the absolute torsion; "
+     "extremes %.3g and %.3g)"
+     % (t_lim, t0.min(), t0.max())),
+)
+for chart, name, axis_range, color, title in charts:
+    series = Show(line0, chart)
+    series.UseIndexForXAxis = 0
+    series.XArrayName = "ArcLength"
+    series.SeriesVisibility = [name]
+    series.SeriesColor = [name] + color
+    series.SeriesLineThickness = [name, "2"]
+    chart.ShowLegend = 0
+    chart.ChartTitle = title
+    chart.LeftAxisTitle = name
+    chart.BottomAxisTitle = "Arc length along line 0"
+    chart.LeftAxisUseCustomRange = 1
+    chart.LeftAxisRangeMinimum, chart.LeftAxisRangeMaximum = axis_range
+layout.SetSize(1000, 700)
+Render(curvature_view)
+Render(torsion_view)
+SaveScreenshot(out_path("aorta-curvature-torsion.png"), layout, ImageResolution=[1000, 700])
+
+# =========================================================================== aorta-torsion.png
+src, cubic, analysis, data, curve, audit = results["aorta"]
+torsion = array(curve, "Torsion")
+limit = float(np.percentile(np.abs(torsion), TORSION_PERCENTILE))
+saturated = 100.0 * np.mean(np.abs(torsion) > limit)
+W, H = 700, 1000
+view = white_render_view(W, H)
+# Tube around the curve. The filter makes the Frenet Normal the active normals,
+# which vtkTubeFilter would follow (twisting the tube where the normal swings):
+# pass only the scalars so that the tube builds its own sliding normals.
+scalars_only = PassArrays(Input=cubic, PointDataArrays=["Torsion", "Curvature"], CellDataArrays=[])
+tube = Tube(Input=scalars_only, Radius=0.6, NumberofSides=24)
+tube_display = Show(tube, view)
+ColorBy(tube_display, ("POINTS", "Torsion"))
+lut = GetColorTransferFunction("Torsion")
+lut.ApplyPreset("Cool to Warm", True)
+lut.AutomaticRescaleRangeMode = "Never"
+lut.RescaleTransferFunction(-limit, limit)
+tube_display.Specular = 0.2
+# Data points as dots on the axis, drawn towards the camera so the tube does not hide them
+# (plain points: sphere imposters get their depth wrong under this parallel camera).
+points = Show(src, view)
+points.SetRepresentationType("Points")
+points.ColorArrayName = [None, ""]
+points.AmbientColor = points.DiffuseColor = [0.05, 0.05, 0.05]
+points.PointSize = 3.0
+points.Position = [0.0, 0.0, 5.0]
+style_scalar_bar(GetScalarBar(lut, view), "Torsion", [0.83, 0.3], 0.4, "%-#.0f")
+caption(view, "Aorta centerlines: cubic spline coloured by torsion\n"
+              "colour range +-%.1f, the %dth percentile of the absolute torsion\n"
+              "(%.1f%% of the samples lie beyond; extremes %.0f and %.0f)\nblack dots: the centerline points"
+        % (limit, TORSION_PERCENTILE, saturated, torsion.min(), torsion.max()))
+place_parallel_camera(view, curve.GetBounds(), (40, 560), (30, 850), W, H)
+SaveScreenshot(out_path("aorta-torsion.png"), view, ImageResolution=[W, H])
+Delete(view)
+
+# =========================================================================== akima-curvature.png
+src, cubic, analysis, data, curve, audit = results["akima"]
+fine = CubicSpline(Input=src, NumberOfSubdivisions=20)
+fine.UpdatePipeline()
+fine_curve = servermanager.Fetch(fine)
+W, H = 800, 600
+view = white_render_view(W, H)
+stretch = [AKIMA_X_STRETCH, 1.0, 1.0]
+polygon = Show(reader("akima.vtp"), view)  # a second reader: Show gives one representation per source
+polygon.SetRepresentationType("Wireframe")
+polygon.ColorArrayName = [None, ""]
+polygon.AmbientColor = polygon.DiffuseColor = [0.6, 0.6, 0.6]
+polygon.LineWidth = 2.0
+polygon.Scale = stretch
+polygon.Position = [0.0, 0.0, -20.0]
+line = Show(fine, view)
+ColorBy(line, ("POINTS", "Curvature"))
+lut = GetColorTransferFunction("Curvature")
+lut.ApplyPreset("Turbo", True)
+lut.AutomaticRescaleRangeMode = "Never"
+lut.RescaleTransferFunction(0.0, 0.5)
+line.LineWidth = 6.0
+line.Ambient, line.Diffuse = 1.0, 0.0  # unlit: the colours are the colour map's
+line.Scale = stretch
+points = Show(src, view)
+points.SetRepresentationType("Points")
+points.ColorArrayName = [None, ""]
+points.AmbientColor = points.DiffuseColor = [0.9, 0.0, 0.9]
+points.PointSize = 14.0
+points.RenderPointsAsSpheres = 1
+points.Scale = stretch
+points.Position = [0.0, 0.0, 20.0]
+bar = GetScalarBar(lut, view)
+style_scalar_bar(bar, "Curvature", [0.86, 0.15], 0.65, "%-#.1f", font=15)
+bar.UseCustomLabels = 1
+bar.CustomLabels = [0.0, 0.1, 0.2, 0.3, 0.4, 0.5]
+bar.AddRangeLabels = 0
+violations = array(audit, "ShapeViolations", True)[0]
+criteria = [(int(array(audit, name + "Violations", True)[0]), text) for name, text in (
+    ("Collinearity", "collinearity (the flat run y = 10 is not kept straight)"),
+    ("ConvexityAtKnot", "convexity at a data point"), ("ConvexityOnSpan", "convexity on a span"),
+    ("Coplanarity", "coplanarity"), ("TorsionSignAtKnot", "torsion sign at a data point"),
+    ("TorsionSignOnSpan", "torsion sign on a span"))]
+caption(view, "Akima's data (magenta) and the cubic spline through them, coloured by curvature\n"
+              "(x stretched %gx; grey: the data polygon). ShapeViolations = %d:\n%s"
+        % (AKIMA_X_STRETCH, violations, ", ".join("%d %s" % c for c in criteria if c[0] > 0)), size=14)
+place_parallel_camera(view, fine_curve.GetBounds(), (40, 640), (30, 510), W, H, stretch=AKIMA_X_STRETCH)
+SaveScreenshot(out_path("akima-curvature.png"), view, ImageResolution=[W, H])
+
+# =========================================================================== files
+missing = [p for p in written if not os.path.isfile(p) or os.path.getsize(p) == 0]
+if missing:
+    raise SystemExit("not written: %s" % missing)
+print("Files written (%.1f s):" % (time.time() - START))
+for path in written:
+    print("  " + path)
