@@ -9,50 +9,80 @@ namespace shapesplines
 {
 namespace
 {
-std::vector<AuditSample> auditSamples(
-  const CurveSamples& samples, const std::vector<FrenetFrame>& frames, bool closed)
+/// The curvature indistinguishable from zero on a span (see flatCurvature).
+class FlatnessThreshold
 {
-  std::vector<AuditSample> audit(samples.size());
-  for (int k = 0; k < samples.size(); ++k)
+public:
+  FlatnessThreshold(const Curve& curve, const CleanPolyline& data, double coordinateNoise)
+    : Knots(curve.knots())
+    , Noise(coordinateNoise)
   {
-    audit[k].Span = samples.Span[k];
-    audit[k].Frame = frames[k];
+    constexpr double RelativeFlatCurvature = 1e-10;
+    const double diagonal = boundingBoxDiagonal(data.Points);
+    this->Floor = RelativeFlatCurvature / (diagonal > 0 ? diagonal : 1.0);
   }
-  markKnots(audit, closed);
-  return audit;
-}
+
+  double operator()(int span, const Vec3& firstDerivative) const
+  {
+    // A spline turns a point moved by +-noise into s'' of up to ~18 noise / dt^2
+    // (measured on collinear data; not-a-knot ends amplify most): bound it by 32.
+    constexpr double RoundingAmplification = 32.0;
+    const double step = (this->Knots[span + 1] - this->Knots[span]) * firstDerivative.norm();
+    return std::max(this->Floor, RoundingAmplification * this->Noise / (step * step));
+  }
+
+private:
+  const std::vector<double>& Knots;
+  double Noise;
+  double Floor = 0.0;
+};
 } // namespace
 
 std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
   const CleanPolyline& data, double coordinateNoise)
 {
-  constexpr double RelativeFlatCurvature = 1e-10;
-  // A spline turns a point moved by +-noise into s'' of up to ~18 noise / dt^2
-  // (measured on collinear data; not-a-knot ends amplify most): bound it by 32.
-  constexpr double RoundingAmplification = 32.0;
-  const double diagonal = boundingBoxDiagonal(data.Points);
-  const double floor = RelativeFlatCurvature / (diagonal > 0 ? diagonal : 1.0);
-  const auto& knots = curve.knots();
-  std::vector<double> flat(samples.size());
+  const FlatnessThreshold flat(curve, data, coordinateNoise);
+  std::vector<double> thresholds(samples.size());
   for (int k = 0; k < samples.size(); ++k)
   {
-    const int span = samples.Span[k];
-    const double step = (knots[span + 1] - knots[span]) * samples.Values[k][1].norm();
-    flat[k] = std::max(floor, RoundingAmplification * coordinateNoise / (step * step));
+    thresholds[k] = flat(samples.Span[k], samples.Values[k][1]);
   }
-  return flat;
+  return thresholds;
 }
 
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
 {
-  SamplingOptions uniform;
-  uniform.Subdivisions = subdivisions;
-  uniform.MeasureArcLength = false;
-  const CurveSamples samples = sampleCurve(curve, uniform);
-  const auto frames =
-    frenetFrames(samples.Values, flatCurvature(curve, samples, data, coordinateNoise));
-  return auditShape(data, shape, auditSamples(samples, frames, curve.isClosed()), tolerances);
+  // Span by span: the audit keeps no samples, so auditing costs no memory traffic.
+  const FlatnessThreshold flat(curve, data, coordinateNoise);
+  ShapeAuditor auditor(data, shape, tolerances);
+  const auto& knots = curve.knots();
+  const int spans = curve.numberOfSpans();
+  std::vector<Derivatives> values(subdivisions + 1);
+  std::vector<double> thresholds(subdivisions + 1);
+  Vec3 lastNormal;
+  for (int j = 0; j < spans; ++j)
+  {
+    // Both ends of the span, so that its frames see both knots.
+    for (int k = 0; k <= subdivisions; ++k)
+    {
+      const double t = knots[j] + (knots[j + 1] - knots[j]) * k / subdivisions;
+      values[k] = curve.evaluateOnSpan(j, t, 3);
+      thresholds[k] = flat(j, values[k][1]);
+    }
+    const auto frames = frenetFrames(values, thresholds, j > 0 ? &lastNormal : nullptr);
+    lastNormal = frames[subdivisions - 1].Normal; // the next span starts after this sample
+    const bool lastOfOpenCurve = !curve.isClosed() && j == spans - 1;
+    for (int k = 0; k < (lastOfOpenCurve ? subdivisions + 1 : subdivisions); ++k)
+    {
+      AuditSample sample;
+      sample.Span = j;
+      sample.Knot = k == 0 ? j : (k == subdivisions ? j + 1 : -1);
+      sample.Frame = frames[k];
+      auditor.add(sample);
+    }
+  }
+  return auditor.result();
 }
 
 void sampleAndAudit(FittedPolyline& fit, const FitOptions& options)

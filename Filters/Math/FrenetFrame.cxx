@@ -29,8 +29,8 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, d
   return frenetFrames(samples, std::vector<double>(samples.size(), flatCurvature));
 }
 
-std::vector<FrenetFrame> frenetFrames(
-  const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature)
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
+  const std::vector<double>& flatCurvature, const Vec3* previousNormal)
 {
   const int n = static_cast<int>(samples.size());
   std::vector<FrenetFrame> frames(n);
@@ -73,14 +73,17 @@ std::vector<FrenetFrame> frenetFrames(
   }
 
   // Fill flat samples by transporting the nearest defined normal along the curve:
-  // forwards from the first defined sample, then backwards before it.
+  // forwards from the previous normal (or the first defined sample), then
+  // backwards before the first defined sample if nothing came before.
   int first = 0;
   while (first < n && !defined[first])
   {
     ++first;
   }
-  Vec3 normal =
-    first < n ? frames[first].Normal : anyNormal(frames.empty() ? Vec3::UnitX() : frames[0].Tangent);
+  const bool continues = previousNormal != nullptr;
+  Vec3 normal = continues ? *previousNormal
+                          : (first < n ? frames[first].Normal
+                                       : anyNormal(n > 0 ? frames[0].Tangent : Vec3::UnitX()));
   auto fill = [&](int k) {
     if (defined[k])
     {
@@ -92,17 +95,15 @@ std::vector<FrenetFrame> frenetFrames(
     f.Binormal = f.Tangent.cross(f.Normal);
     normal = f.Normal;
   };
-  for (int k = (first < n ? first : 0); k < n; ++k)
+  const int forwardFrom = continues || first == n ? 0 : first;
+  for (int k = forwardFrom; k < n; ++k)
   {
     fill(k);
   }
-  if (first < n)
+  normal = forwardFrom > 0 ? frames[first].Normal : normal;
+  for (int k = forwardFrom - 1; k >= 0; --k)
   {
-    normal = frames[first].Normal;
-    for (int k = first - 1; k >= 0; --k)
-    {
-      fill(k);
-    }
+    fill(k);
   }
   return frames;
 }

@@ -22,10 +22,12 @@ struct FrenetFrame
  * curvature is always the curve's own; where it is at or below flatCurvature[k]
  * (within rounding of zero) the Frenet normal is undefined: the torsion is 0
  * and the normal is carried by parallel transport from the nearest sample
- * where it is defined, so frames stay continuous and finite.
+ * where it is defined, so frames stay continuous and finite. previousNormal,
+ * the last normal of the samples just before these, continues a curve's frames
+ * piece by piece exactly as if they were computed in one go.
  */
-std::vector<FrenetFrame> frenetFrames(
-  const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature);
+std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
+  const std::vector<double>& flatCurvature, const Vec3* previousNormal = nullptr);
 
 /// The same with one threshold for every sample.
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature);

@@ -100,6 +100,15 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
     }
   }
 
+  // Exact sizes: growing by doubling would touch twice the memory (and page faults).
+  long count = curve.isClosed() ? 0 : 1;
+  for (const long n : perSpan)
+  {
+    count += n;
+  }
+  samples.Parameter.reserve(count);
+  samples.Span.reserve(count);
+  samples.Values.reserve(count);
   auto addSample = [&](int span, double t) {
     samples.Parameter.push_back(t);
     samples.Span.push_back(span);

@@ -1,7 +1,6 @@
 #include "ShapeAnalysis.h"
 
-#include <set>
-#include <utility>
+#include <algorithm>
 
 namespace shapesplines
 {
@@ -112,106 +111,124 @@ int ShapeAudit::violations() const
   return total;
 }
 
-ShapeAudit auditShape(const CleanPolyline& data, const DiscreteShape& shape,
-  const std::vector<AuditSample>& samples, const ShapeTolerances& tolerances)
+ShapeAuditor::ShapeAuditor(
+  const CleanPolyline& data, const DiscreteShape& shape, const ShapeTolerances& tolerances)
+  : Data(data)
+  , Shape(shape)
+  , Tolerances(tolerances)
 {
+  const double diagonal = boundingBoxDiagonal(data.Points);
+  this->Scale = diagonal > 0 ? diagonal : 1.0;
+  this->Audit.SpanMask.assign(std::max(data.numberOfSpans(), 0), 0u);
+}
+
+void ShapeAuditor::fail(ShapeCriterion criterion, int where, int span)
+{
+  this->Failed.emplace(static_cast<int>(criterion), where);
+  if (span >= 0 && span < static_cast<int>(this->Audit.SpanMask.size()))
+  {
+    this->Audit.SpanMask[span] |= 1u << static_cast<int>(criterion);
+  }
+}
+
+double ShapeAuditor::signedCurvature(const FrenetFrame& f, int point) const
+{
+  return f.Curvature * f.Binormal.dot(this->Shape.Binormal[point].normalized()) * this->Scale;
+}
+
+void ShapeAuditor::add(const AuditSample& s)
+{
+  const CleanPolyline& data = this->Data;
+  const DiscreteShape& shape = this->Shape;
+  const double tolerance = this->Tolerances.Curve;
   const int n = static_cast<int>(data.Points.size());
   const int spans = data.numberOfSpans();
-  const double diagonal = boundingBoxDiagonal(data.Points);
-  const double scale = diagonal > 0 ? diagonal : 1.0;
-  ShapeAudit audit;
-  audit.SpanMask.assign(std::max(spans, 0), 0u);
-  std::set<std::pair<int, int>> failed; // (criterion, knot or span)
-
-  auto fail = [&](ShapeCriterion criterion, int where, int span) {
-    failed.emplace(static_cast<int>(criterion), where);
-    if (span >= 0 && span < spans)
-    {
-      audit.SpanMask[span] |= 1u << static_cast<int>(criterion);
-    }
-  };
-  auto signedCurvature = [&](const FrenetFrame& f, int point) {
-    return f.Curvature * f.Binormal.dot(shape.Binormal[point].normalized()) * scale;
-  };
-  auto unit = [](const Vec3& v) -> Vec3 { return v.normalized(); };
-
-  for (const AuditSample& s : samples)
+  const int j = s.Span;
+  if (j < 0 || j >= spans)
   {
-    const int j = s.Span;
-    if (j < 0 || j >= spans)
-    {
-      continue;
-    }
-    const int next = (j + 1) % n;
-    const FrenetFrame& f = s.Frame;
-    const bool inside = s.Knot < 0;
+    return;
+  }
+  const int next = (j + 1) % n;
+  const FrenetFrame& f = s.Frame;
+  const bool inside = s.Knot < 0;
 
-    // (i) collinearity: at I_i and inside the spans on both sides of it.
-    for (const int i : { j, next })
+  // (i) collinearity: at I_i and inside the spans on both sides of it.
+  for (const int i : { j, next })
+  {
+    const bool onOwnKnot = s.Knot == i;
+    if (shape.Collinear[i] && (inside || onOwnKnot) &&
+      f.Tangent.cross(data.segment(i).normalized()).norm() > tolerance)
     {
-      const bool onOwnKnot = s.Knot == i;
-      if (shape.Collinear[i] && (inside || onOwnKnot))
-      {
-        const Vec3 direction = unit(data.segment(i));
-        if (f.Tangent.cross(direction).norm() > tolerances.Curve)
-        {
-          fail(ShapeCriterion::Collinearity, i, j);
-        }
-      }
-    }
-
-    // (iii) coplanarity: the osculating plane is the data plane, on the closed span.
-    if (shape.Coplanar[j] && f.Curvature > 0)
-    {
-      const int planeAt = shape.Convex[j] ? j : (shape.Convex[next] ? next : -1);
-      if (planeAt >= 0 &&
-        f.Binormal.cross(unit(shape.Binormal[planeAt])).norm() > tolerances.Curve)
-      {
-        fail(ShapeCriterion::Coplanarity, j, j);
-      }
-    }
-
-    if (s.Knot >= 0)
-    {
-      const int i = s.Knot % n;
-      const int before = (i - 1 + spans) % spans;
-      const int after = i % spans;
-      const int spanBefore = data.Closed || i > 0 ? before : -1;
-      const int spanAfter = data.Closed || i < n - 1 ? after : -1;
-      // (ii.1) convexity at the knot.
-      if (shape.Convex[i] && signedCurvature(f, i) < -tolerances.Curve)
-      {
-        fail(ShapeCriterion::ConvexityAtKnot, i, spanBefore);
-        fail(ShapeCriterion::ConvexityAtKnot, i, spanAfter);
-      }
-      // (iv.1) torsion sign at the knot where both neighbouring segments agree.
-      if (spanBefore >= 0 && spanAfter >= 0 && shape.Twisted[spanBefore] &&
-        shape.Twisted[spanAfter] && shape.Torsion[spanBefore] * shape.Torsion[spanAfter] > 0 &&
-        f.Torsion * sign(shape.Torsion[spanAfter]) * scale < -tolerances.Curve)
-      {
-        fail(ShapeCriterion::TorsionSignAtKnot, i, spanBefore);
-        fail(ShapeCriterion::TorsionSignAtKnot, i, spanAfter);
-      }
-      continue;
-    }
-
-    // (ii.2) convexity inside a span whose end binormals agree.
-    if (shape.Convex[j] && shape.Convex[next] &&
-      shape.Binormal[j].dot(shape.Binormal[next]) > 0 &&
-      (signedCurvature(f, j) < -tolerances.Curve || signedCurvature(f, next) < -tolerances.Curve))
-    {
-      fail(ShapeCriterion::ConvexityOnSpan, j, j);
-    }
-    // (iv.2) torsion sign inside a twisted span.
-    if (shape.Twisted[j] && f.Torsion * sign(shape.Torsion[j]) * scale < -tolerances.Curve)
-    {
-      fail(ShapeCriterion::TorsionSignOnSpan, j, j);
+      this->fail(ShapeCriterion::Collinearity, i, j);
     }
   }
-  for (const auto& [criterion, where] : failed)
+
+  // (iii) coplanarity on the closed span: the osculating plane is the data
+  // plane, where the curve bends enough (scale-free) to have one.
+  if (shape.Coplanar[j] && f.Curvature * this->Scale > tolerance)
+  {
+    const int planeAt = shape.Convex[j] ? j : (shape.Convex[next] ? next : -1);
+    if (planeAt >= 0 &&
+      f.Binormal.cross(shape.Binormal[planeAt].normalized()).norm() > tolerance)
+    {
+      this->fail(ShapeCriterion::Coplanarity, j, j);
+    }
+  }
+
+  if (!inside)
+  {
+    const int i = s.Knot % n;
+    const int spanBefore = data.Closed || i > 0 ? (i - 1 + spans) % spans : -1;
+    const int spanAfter = data.Closed || i < n - 1 ? i % spans : -1;
+    // (ii.1) convexity at the knot.
+    if (shape.Convex[i] && this->signedCurvature(f, i) < -tolerance)
+    {
+      this->fail(ShapeCriterion::ConvexityAtKnot, i, spanBefore);
+      this->fail(ShapeCriterion::ConvexityAtKnot, i, spanAfter);
+    }
+    // (iv.1) torsion sign at the knot where both neighbouring segments agree.
+    if (spanBefore >= 0 && spanAfter >= 0 && shape.Twisted[spanBefore] &&
+      shape.Twisted[spanAfter] && shape.Torsion[spanBefore] * shape.Torsion[spanAfter] > 0 &&
+      f.Torsion * sign(shape.Torsion[spanAfter]) * this->Scale < -tolerance)
+    {
+      this->fail(ShapeCriterion::TorsionSignAtKnot, i, spanBefore);
+      this->fail(ShapeCriterion::TorsionSignAtKnot, i, spanAfter);
+    }
+    return;
+  }
+
+  // (ii.2) convexity inside a span whose end binormals agree.
+  if (shape.Convex[j] && shape.Convex[next] &&
+    shape.Binormal[j].dot(shape.Binormal[next]) > 0 &&
+    (this->signedCurvature(f, j) < -tolerance || this->signedCurvature(f, next) < -tolerance))
+  {
+    this->fail(ShapeCriterion::ConvexityOnSpan, j, j);
+  }
+  // (iv.2) torsion sign inside a twisted span.
+  if (shape.Twisted[j] && f.Torsion * sign(shape.Torsion[j]) * this->Scale < -tolerance)
+  {
+    this->fail(ShapeCriterion::TorsionSignOnSpan, j, j);
+  }
+}
+
+ShapeAudit ShapeAuditor::result() const
+{
+  ShapeAudit audit = this->Audit;
+  for (const auto& [criterion, where] : this->Failed)
   {
     ++audit.Failures[criterion];
   }
   return audit;
+}
+
+ShapeAudit auditShape(const CleanPolyline& data, const DiscreteShape& shape,
+  const std::vector<AuditSample>& samples, const ShapeTolerances& tolerances)
+{
+  ShapeAuditor auditor(data, shape, tolerances);
+  for (const AuditSample& s : samples)
+  {
+    auditor.add(s);
+  }
+  return auditor.result();
 }
 } // namespace shapesplines

@@ -7,6 +7,8 @@
 #include "Parameterization.h"
 
 #include <array>
+#include <set>
+#include <utility>
 #include <vector>
 
 namespace shapesplines
@@ -77,11 +79,34 @@ struct ShapeAudit
 };
 
 /**
- * Audits a curve, given by its samples, against the discrete shape of its
- * data: which criteria of Definition 1 fail on which span. Sign conditions
- * fail only when the signed value drops below -tolerances.Curve (scaled by
- * the data's bounding-box diagonal); a vanishing value is not a sign change.
+ * Audits a curve, given one sample at a time in any order, against the
+ * discrete shape of its data: which criteria of Definition 1 fail on which
+ * span. Sign conditions fail only when the signed value, made scale-free
+ * with the data's bounding-box diagonal, drops below -tolerances.Curve: a
+ * vanishing value is not a sign change; likewise only samples whose
+ * scale-free curvature exceeds tolerances.Curve have an osculating plane to
+ * check. The data and shape must outlive the auditor.
  */
+class ShapeAuditor
+{
+public:
+  ShapeAuditor(const CleanPolyline& data, const DiscreteShape& shape, const ShapeTolerances& tolerances);
+  void add(const AuditSample& sample);
+  ShapeAudit result() const;
+
+private:
+  void fail(ShapeCriterion criterion, int where, int span);
+  double signedCurvature(const FrenetFrame& frame, int point) const;
+
+  const CleanPolyline& Data;
+  const DiscreteShape& Shape;
+  ShapeTolerances Tolerances;
+  double Scale = 1.0;
+  ShapeAudit Audit;
+  std::set<std::pair<int, int>> Failed; ///< (criterion, knot or span)
+};
+
+/// The audit of a whole sequence of samples.
 ShapeAudit auditShape(const CleanPolyline& data, const DiscreteShape& shape,
   const std::vector<AuditSample>& samples, const ShapeTolerances& tolerances = {});
 } // namespace shapesplines

@@ -134,3 +134,32 @@ TEST(FrenetFrame, StationaryPointStaysFinite)
   EXPECT_TRUE(std::isfinite(f.Torsion));
   expectOrthonormal(f);
 }
+
+TEST(FrenetFrame, PiecewiseFramesEqualFramesInOneGo)
+{
+  // Curved, flat (s'' = 0) across the cut, curved again.
+  std::vector<Derivatives> samples(8);
+  for (size_t k = 0; k < samples.size(); ++k)
+  {
+    samples[k].fill(Vec3::Zero());
+    samples[k][1] = Vec3(1, 0.1 * k, 0);
+    samples[k][2] = (k < 2 || k > 5) ? Vec3(0, 0.3, 1) : Vec3::Zero();
+    samples[k][3] = Vec3(0, 0, 0.2);
+  }
+  const std::vector<double> flat(samples.size(), 1e-12);
+  const auto whole = frenetFrames(samples, flat);
+  const std::vector<Derivatives> first(samples.begin(), samples.begin() + 4);
+  const std::vector<Derivatives> second(samples.begin() + 4, samples.end());
+  const auto a = frenetFrames(first, std::vector<double>(4, 1e-12));
+  const auto b = frenetFrames(second, std::vector<double>(4, 1e-12), &a.back().Normal);
+  for (size_t k = 0; k < samples.size(); ++k)
+  {
+    const FrenetFrame& piece = k < 4 ? a[k] : b[k - 4];
+    EXPECT_LT((piece.Normal - whole[k].Normal).norm(), 1e-15) << k;
+    EXPECT_EQ(piece.Torsion, whole[k].Torsion) << k;
+  }
+  // Without the previous normal the flat start of the second piece would
+  // borrow the normal of its own first curved sample instead.
+  const auto alone = frenetFrames(second, std::vector<double>(4, 1e-12));
+  EXPECT_GT((alone[0].Normal - whole[4].Normal).norm(), 1e-3);
+}
