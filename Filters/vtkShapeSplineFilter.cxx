@@ -8,6 +8,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -16,6 +17,7 @@
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <exception>
 #include <initializer_list>
 #include <limits>
@@ -216,9 +218,13 @@ int vtkShapeSplineFilter::RequestData(
   }
   this->UpdateProgress(0.8);
 
-  vtkIdType outputSize = 0;
-  for (LineWork& line : lines)
+  // Messages and where each line's samples go, serially (VTK's messages are not
+  // thread-safe); then the arrays are written in parallel, a line per task.
+  std::vector<size_t> kept; // lines in the output, in input order
+  std::vector<vtkIdType> firstSample(1, 0);
+  for (size_t k = 0; k < lines.size(); ++k)
   {
+    const LineWork& line = lines[k];
     if (!line.Error.empty())
     {
       vtkErrorMacro("Line (cell " << line.CellId << ") skipped: " << line.Error << ".");
@@ -234,10 +240,8 @@ int vtkShapeSplineFilter::RequestData(
     {
       vtkWarningMacro("Line (cell " << line.CellId
                                     << ") has fewer than two distinct points: passed through.");
-      outputSize += static_cast<vtkIdType>(line.PointIds.size());
-      continue;
     }
-    if (fit.Data.Points.size() == 2)
+    else if (fit.Data.Points.size() == 2)
     {
       vtkWarningMacro("Line (cell " << line.CellId
                                     << ") has two distinct points: output is a straight segment.");
@@ -247,20 +251,22 @@ int vtkShapeSplineFilter::RequestData(
       vtkWarningMacro("Line (cell " << line.CellId
                                     << "): SampleLength too small, sample spacing widened.");
     }
-    outputSize += fit.Samples.size();
+    const size_t count = fit.Spline ? fit.Samples.size() : line.PointIds.size();
+    kept.push_back(k);
+    firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
   }
+  const vtkIdType outputSize = firstSample.back();
+  const auto lineCount = static_cast<vtkIdType>(kept.size());
 
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
   PointArrayTransfer carried(inPD, outputSize);
-  outCD->CopyAllocate(inCD, static_cast<vtkIdType>(lines.size()));
 
   vtkNew<vtkPoints> outPoints;
   outPoints->SetDataTypeToDouble();
   outPoints->SetNumberOfPoints(outputSize);
-  vtkNew<vtkCellArray> outLines;
   auto curvature = NewArray("Curvature", 1, outputSize);
   auto torsion = NewArray("Torsion", 1, outputSize);
   auto tangent = NewArray("Tangent", 3, outputSize);
@@ -271,42 +277,48 @@ int vtkShapeSplineFilter::RequestData(
   vtkNew<vtkIntArray> spanIndex;
   spanIndex->SetName("SpanIndex");
   spanIndex->SetNumberOfTuples(outputSize);
-  vtkNew<vtkUnsignedCharArray> preserving;
-  preserving->SetName("ShapePreserving");
-  vtkNew<vtkIntArray> violations;
-  violations->SetName("ShapeViolations");
-  auto length = NewArray("Length", 1, 0);
-  auto tortuosity = NewArray("Tortuosity", 1, 0);
-
-  vtkIdType next = 0;
-  std::vector<vtkIdType> cell;
-  for (size_t k = 0; k < lines.size(); ++k)
+  // Closed lines repeat their first sample id at the end of their cell.
+  vtkNew<vtkIdTypeArray> cellOffsets;
+  cellOffsets->SetNumberOfTuples(lineCount + 1);
+  cellOffsets->SetValue(0, 0);
+  for (vtkIdType c = 0; c < lineCount; ++c)
   {
-    const LineWork& line = lines[k];
-    if (!line.Error.empty())
+    const auto& fit = lines[kept[c]].Fit;
+    const vtkIdType closing = fit.Spline && fit.Data.Closed ? 1 : 0;
+    cellOffsets->SetValue(c + 1,
+      cellOffsets->GetValue(c) + firstSample[c + 1] - firstSample[c] + closing);
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfTuples(cellOffsets->GetValue(lineCount));
+
+  double* xyz = vtkDoubleArray::SafeDownCast(outPoints->GetData())->GetPointer(0);
+  vtkSMPTools::For(0, lineCount, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
     {
-      continue;
-    }
-    const auto& fit = line.Fit;
-    cell.clear();
-    if (!fit.Spline)
-    {
-      for (const vtkIdType id : line.PointIds)
+      const LineWork& line = lines[kept[c]];
+      const auto& fit = line.Fit;
+      vtkIdType* cell = connectivity->GetPointer(cellOffsets->GetValue(c));
+      vtkIdType next = firstSample[c];
+      if (!fit.Spline)
       {
-        outPoints->SetPoint(next, input->GetPoint(id));
-        carried.Interpolate(next, id, id, 0.0);
-        const double zero[3] = { 0, 0, 0 };
-        for (vtkDoubleArray* a : std::initializer_list<vtkDoubleArray*>{
-               curvature, torsion, tangent, normal, binormal, parameter, arcLength })
+        // Passed through unchanged, with a zero frame.
+        for (const vtkIdType id : line.PointIds)
         {
-          a->SetTuple(next, zero);
+          inPoints->GetPoint(id, xyz + 3 * next);
+          carried.Interpolate(next, id, id, 0.0);
+          curvature->SetValue(next, 0.0);
+          torsion->SetValue(next, 0.0);
+          parameter->SetValue(next, 0.0);
+          arcLength->SetValue(next, 0.0);
+          for (vtkDoubleArray* frame : { tangent.Get(), normal.Get(), binormal.Get() })
+          {
+            frame->SetTuple3(next, 0.0, 0.0, 0.0);
+          }
+          spanIndex->SetValue(next, 0);
+          *cell++ = next++;
         }
-        spanIndex->SetValue(next, 0);
-        cell.push_back(next++);
+        continue;
       }
-    }
-    else
-    {
       const auto& samples = fit.Samples;
       const int knotCount = static_cast<int>(fit.Data.Points.size());
       for (int s = 0; s < samples.size(); ++s)
@@ -317,37 +329,52 @@ int vtkShapeSplineFilter::RequestData(
         const vtkIdType from = line.PointIds[fit.Data.SourceIndex[span]];
         const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
         carried.Interpolate(next, from, to, fraction);
-        outPoints->SetPoint(next, samples.Values[s][0].data());
+        std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
         const auto& frame = fit.Frames[s];
         curvature->SetValue(next, frame.Curvature);
         torsion->SetValue(next, frame.Torsion);
-        tangent->SetTuple(next, frame.Tangent.data());
-        normal->SetTuple(next, frame.Normal.data());
-        binormal->SetTuple(next, frame.Binormal.data());
+        std::copy_n(frame.Tangent.data(), 3, tangent->GetPointer(3 * next));
+        std::copy_n(frame.Normal.data(), 3, normal->GetPointer(3 * next));
+        std::copy_n(frame.Binormal.data(), 3, binormal->GetPointer(3 * next));
         parameter->SetValue(next, samples.Parameter[s]);
         arcLength->SetValue(next, samples.ArcLength[s]);
         spanIndex->SetValue(next, span);
-        cell.push_back(next++);
+        *cell++ = next++;
       }
       if (fit.Data.Closed)
       {
-        cell.push_back(cell.front());
+        *cell = firstSample[c];
       }
     }
-    const vtkIdType outCell = outLines->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
-    outCD->CopyData(inCD, line.CellId, outCell);
+  });
+  this->UpdateProgress(0.95);
+  vtkNew<vtkCellArray> outLines;
+  outLines->SetData(cellOffsets, connectivity);
+
+  // Per-line cell data.
+  outCD->CopyAllocate(inCD, lineCount);
+  vtkNew<vtkUnsignedCharArray> preserving;
+  preserving->SetName("ShapePreserving");
+  preserving->SetNumberOfTuples(lineCount);
+  vtkNew<vtkIntArray> violations;
+  violations->SetName("ShapeViolations");
+  violations->SetNumberOfTuples(lineCount);
+  auto length = NewArray("Length", 1, lineCount);
+  auto tortuosity = NewArray("Tortuosity", 1, lineCount);
+  for (vtkIdType c = 0; c < lineCount; ++c)
+  {
+    const LineWork& line = lines[kept[c]];
+    const auto& fit = line.Fit;
+    outCD->CopyData(inCD, line.CellId, c);
     const int count = fit.Spline ? fit.Audit.violations() : 0;
-    preserving->InsertNextValue(count == 0 ? 1 : 0);
-    violations->InsertNextValue(count);
+    preserving->SetValue(c, count == 0 ? 1 : 0);
+    violations->SetValue(c, count);
     const double total = fit.Spline ? fit.Samples.Length : 0.0;
-    const double span =
-      fit.Data.Closed || fit.Data.Points.size() < 2 ? 0.0 : (fit.Data.Points.back() - fit.Data.Points.front()).norm();
-    length->InsertNextValue(total);
-    tortuosity->InsertNextValue(span > 0 ? total / span : 0.0);
-    if (k % 1000 == 0)
-    {
-      this->UpdateProgress(0.8 + 0.2 * static_cast<double>(k) / lines.size());
-    }
+    const double chord = fit.Data.Closed || fit.Data.Points.size() < 2
+      ? 0.0
+      : (fit.Data.Points.back() - fit.Data.Points.front()).norm();
+    length->SetValue(c, total);
+    tortuosity->SetValue(c, chord > 0 ? total / chord : 0.0);
   }
 
   output->SetPoints(outPoints);
