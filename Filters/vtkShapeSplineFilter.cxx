@@ -33,6 +33,7 @@ struct LineWork
   vtkIdType CellId = 0;
   std::vector<vtkIdType> PointIds;
   shapesplines::FittedPolyline Fit;
+  double Length = 0.0; ///< of the sampled curve
   std::string Error;
 };
 
@@ -246,12 +247,12 @@ int vtkShapeSplineFilter::RequestData(
       vtkWarningMacro("Line (cell " << line.CellId
                                     << ") has two distinct points: output is a straight segment.");
     }
-    if (fit.Samples.LengthIncreased)
+    if (fit.Plan.LengthIncreased)
     {
       vtkWarningMacro("Line (cell " << line.CellId
                                     << "): SampleLength too small, sample spacing widened.");
     }
-    const size_t count = fit.Spline ? fit.Samples.size() : line.PointIds.size();
+    const size_t count = fit.Spline ? fit.Plan.size() : line.PointIds.size();
     kept.push_back(k);
     firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
   }
@@ -295,7 +296,7 @@ int vtkShapeSplineFilter::RequestData(
   vtkSMPTools::For(0, lineCount, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end; ++c)
     {
-      const LineWork& line = lines[kept[c]];
+      LineWork& line = lines[kept[c]];
       const auto& fit = line.Fit;
       vtkIdType* cell = connectivity->GetPointer(cellOffsets->GetValue(c));
       vtkIdType next = firstSample[c];
@@ -319,7 +320,10 @@ int vtkShapeSplineFilter::RequestData(
         }
         continue;
       }
-      const auto& samples = fit.Samples;
+      // Sampled here, a line at a time, and written straight into the output.
+      const shapesplines::SampledCurve sampled = shapesplines::sampleFit(fit);
+      const auto& samples = sampled.Samples;
+      line.Length = samples.Length;
       const int knotCount = static_cast<int>(fit.Data.Points.size());
       for (int s = 0; s < samples.size(); ++s)
       {
@@ -330,7 +334,7 @@ int vtkShapeSplineFilter::RequestData(
         const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
         carried.Interpolate(next, from, to, fraction);
         std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
-        const auto& frame = fit.Frames[s];
+        const auto& frame = sampled.Frames[s];
         curvature->SetValue(next, frame.Curvature);
         torsion->SetValue(next, frame.Torsion);
         std::copy_n(frame.Tangent.data(), 3, tangent->GetPointer(3 * next));
@@ -369,7 +373,7 @@ int vtkShapeSplineFilter::RequestData(
     const int count = fit.Spline ? fit.Audit.violations() : 0;
     preserving->SetValue(c, count == 0 ? 1 : 0);
     violations->SetValue(c, count);
-    const double total = fit.Spline ? fit.Samples.Length : 0.0;
+    const double total = line.Length;
     const double chord = fit.Data.Closed || fit.Data.Points.size() < 2
       ? 0.0
       : (fit.Data.Points.back() - fit.Data.Points.front()).norm();

@@ -85,18 +85,25 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
-void sampleAndAudit(FittedPolyline& fit, const FitOptions& options)
+SampledCurve sampleFit(const FittedPolyline& fit)
 {
-  fit.Samples = sampleCurve(*fit.Spline, options.Sampling);
-  fit.Frames = frenetFrames(
-    fit.Samples.Values, flatCurvature(*fit.Spline, fit.Samples, fit.Data, fit.CoordinateNoise));
-  for (Derivatives& sample : fit.Samples.Values)
+  SampledCurve sampled;
+  CurveSamples& samples = sampled.Samples;
+  samples = sampleCurve(*fit.Spline, fit.Plan);
+  sampled.Frames =
+    frenetFrames(samples.Values, flatCurvature(*fit.Spline, samples, fit.Data, fit.CoordinateNoise));
+  for (int k = 0; k < samples.size(); ++k)
   {
-    sample[0] += fit.Origin;
+    // The knot samples are the data points, exactly (not shifted there and back).
+    const int span = samples.Span[k];
+    samples.Values[k][0] =
+      samples.Parameter[k] == fit.Knots[span] ? fit.KnotPoints[span] : Vec3(samples.Values[k][0] + fit.Origin);
   }
-  fit.Shape = discreteShape(fit.Data, options.Tolerances);
-  fit.Audit = auditCurve(*fit.Spline, fit.Data, fit.Shape, options.Tolerances,
-    options.AuditSubdivisions, fit.CoordinateNoise);
+  if (!fit.Data.Closed)
+  {
+    samples.Values.back()[0] = fit.KnotPoints.back();
+  }
+  return sampled;
 }
 
 FittedPolyline fitPolyline(
@@ -115,6 +122,7 @@ FittedPolyline fitPolyline(
   {
     return fit;
   }
+  fit.KnotPoints = fit.Data.Points;
   Vec3 lo = fit.Data.Points.front();
   Vec3 hi = lo;
   for (const Vec3& p : fit.Data.Points)
@@ -123,7 +131,8 @@ FittedPolyline fitPolyline(
     hi = hi.cwiseMax(p);
   }
   fit.Origin = 0.5 * (lo + hi);
-  fit.CoordinateNoise = options.CoordinatePrecision * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  fit.CoordinateNoise =
+    options.CoordinatePrecision * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
   for (Vec3& p : fit.Data.Points)
   {
     p -= fit.Origin;
@@ -138,21 +147,10 @@ FittedPolyline fitPolyline(
   {
     fit.Spline = build(fit.Data, fit.Knots);
   }
-  sampleAndAudit(fit, options);
-  // The knot samples are the data points, exactly (not shifted there and back).
-  CurveSamples& samples = fit.Samples;
-  for (int k = 0; k < samples.size(); ++k)
-  {
-    const int span = samples.Span[k];
-    if (samples.Parameter[k] == fit.Knots[span])
-    {
-      samples.Values[k][0] = points[fit.Data.SourceIndex[span]];
-    }
-  }
-  if (!fit.Data.Closed)
-  {
-    samples.Values.back()[0] = points[fit.Data.SourceIndex.back()];
-  }
+  fit.Shape = discreteShape(fit.Data, options.Tolerances);
+  fit.Audit = auditCurve(*fit.Spline, fit.Data, fit.Shape, options.Tolerances,
+    options.AuditSubdivisions, fit.CoordinateNoise);
+  fit.Plan = planSamples(*fit.Spline, options.Sampling);
   return fit;
 }
 } // namespace shapesplines

@@ -32,6 +32,11 @@ struct FitOptions
 using CurveBuilder =
   std::function<std::unique_ptr<Curve>(const CleanPolyline& data, const std::vector<double>& knots)>;
 
+/**
+ * A family's curve through one polyline, audited, with its sampling planned
+ * but not done: sampleFit() samples it when its output is written, so that
+ * no more than one line's samples per thread are ever held.
+ */
 struct FittedPolyline
 {
   /// The cleaned points relative to Origin, the centre of their bounding box: the
@@ -39,17 +44,21 @@ struct FittedPolyline
   /// distance from the coordinate origin. Samples are in input coordinates.
   CleanPolyline Data;
   Vec3 Origin = Vec3::Zero();
+  std::vector<Vec3> KnotPoints; ///< the cleaned points in input coordinates
   double CoordinateNoise = 0.0; ///< absolute rounding of the input coordinates
   std::vector<double> Knots;
   std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
-  CurveSamples Samples;
-  std::vector<FrenetFrame> Frames;
   DiscreteShape Shape;
   ShapeAudit Audit;
+  SamplingPlan Plan;
 };
 
-/// Samples, frames and audits a curve; written once for every family.
-void sampleAndAudit(FittedPolyline& fit, const FitOptions& options);
+/// A fitted curve's samples (in input coordinates) and their Frenet frames.
+struct SampledCurve
+{
+  CurveSamples Samples;
+  std::vector<FrenetFrame> Frames;
+};
 
 /**
  * Per sample, the curvature indistinguishable from zero, where the Frenet
@@ -67,11 +76,18 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 
 /**
  * Cleans the points, computes knots, builds the curve (two distinct points
- * give the straight segment whatever the family), samples it, computes frames
- * and audits its shape. Throws std::invalid_argument for non-finite points.
+ * give the straight segment whatever the family), audits its shape and plans
+ * its sampling. Throws std::invalid_argument for non-finite points.
  */
 FittedPolyline fitPolyline(
   const std::vector<Vec3>& points, const FitOptions& options, const CurveBuilder& build);
+
+/**
+ * Samples a fitted curve as planned, with Frenet frames, curvature and torsion
+ * from its exact derivatives; the knot samples are the data points, exactly.
+ * Written once for every family. The fit must have a Spline.
+ */
+SampledCurve sampleFit(const FittedPolyline& fit);
 } // namespace shapesplines
 
 #endif

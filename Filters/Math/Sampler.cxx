@@ -72,40 +72,59 @@ double arcLength(const Curve& curve, int span, double a, double b)
   return speedIntegral(curve, span, a, b);
 }
 
-CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
+long SamplingPlan::size() const
 {
-  const int spans = curve.numberOfSpans();
-  const auto& knots = curve.knots();
-  CurveSamples samples;
-  std::vector<long> perSpan(spans, std::max(1, options.Subdivisions));
-  std::vector<double> lengths(spans);
-  if (options.SampleMode == SamplingOptions::Mode::ArcLength)
-  {
-    double total = 0.0;
-    for (int j = 0; j < spans; ++j)
-    {
-      lengths[j] = spanLength(curve, j);
-      total += lengths[j];
-    }
-    double spacing = options.TargetLength;
-    const double budget = static_cast<double>(options.MaximumSamples - spans - 1);
-    if (!(spacing > 0) || total / spacing > budget)
-    {
-      spacing = total / std::max(budget, 1.0);
-      samples.LengthIncreased = true;
-    }
-    for (int j = 0; j < spans; ++j)
-    {
-      perSpan[j] = std::max(1L, static_cast<long>(std::ceil(lengths[j] / spacing - 1e-9)));
-    }
-  }
-
-  // Exact sizes: growing by doubling would touch twice the memory (and page faults).
-  long count = curve.isClosed() ? 0 : 1;
-  for (const long n : perSpan)
+  long count = this->Closed ? 0 : 1;
+  for (const long n : this->PerSpan)
   {
     count += n;
   }
+  return count;
+}
+
+SamplingPlan planSamples(const Curve& curve, const SamplingOptions& options)
+{
+  const int spans = curve.numberOfSpans();
+  SamplingPlan plan;
+  plan.Closed = curve.isClosed();
+  plan.PerSpan.assign(spans, std::max(1, options.Subdivisions));
+  if (options.SampleMode != SamplingOptions::Mode::ArcLength)
+  {
+    return plan;
+  }
+  plan.SpanLengths.resize(spans);
+  double total = 0.0;
+  for (int j = 0; j < spans; ++j)
+  {
+    plan.SpanLengths[j] = spanLength(curve, j);
+    total += plan.SpanLengths[j];
+  }
+  double spacing = options.TargetLength;
+  const double budget = static_cast<double>(options.MaximumSamples - spans - 1);
+  if (!(spacing > 0) || total / spacing > budget)
+  {
+    spacing = total / std::max(budget, 1.0);
+    plan.LengthIncreased = true;
+  }
+  for (int j = 0; j < spans; ++j)
+  {
+    plan.PerSpan[j] = std::max(1L, static_cast<long>(std::ceil(plan.SpanLengths[j] / spacing - 1e-9)));
+  }
+  return plan;
+}
+
+CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
+{
+  return sampleCurve(curve, planSamples(curve, options));
+}
+
+CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan)
+{
+  const int spans = curve.numberOfSpans();
+  const auto& knots = curve.knots();
+  const bool byArcLength = !plan.SpanLengths.empty();
+  CurveSamples samples;
+  const long count = plan.size();
   samples.Parameter.reserve(count);
   samples.Span.reserve(count);
   samples.Values.reserve(count);
@@ -118,11 +137,11 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
   {
     const double t0 = knots[j];
     const double t1 = knots[j + 1];
-    for (long k = 0; k < perSpan[j]; ++k)
+    for (long k = 0; k < plan.PerSpan[j]; ++k)
     {
-      const double fraction = static_cast<double>(k) / perSpan[j];
-      const double t = options.SampleMode == SamplingOptions::Mode::ArcLength && k > 0
-        ? parameterAtLength(curve, j, fraction * lengths[j], lengths[j])
+      const double fraction = static_cast<double>(k) / plan.PerSpan[j];
+      const double t = byArcLength && k > 0
+        ? parameterAtLength(curve, j, fraction * plan.SpanLengths[j], plan.SpanLengths[j])
         : t0 + fraction * (t1 - t0);
       addSample(j, t);
     }
@@ -132,10 +151,6 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
     addSample(spans - 1, knots[spans]);
   }
 
-  if (!options.MeasureArcLength)
-  {
-    return samples;
-  }
   samples.ArcLength.resize(samples.size(), 0.0);
   for (int k = 1; k < samples.size(); ++k)
   {

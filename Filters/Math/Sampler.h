@@ -20,9 +20,22 @@ struct SamplingOptions
   double TargetLength = 1.0;
   /// Upper bound on samples per curve; the arc-length spacing grows to respect it.
   long MaximumSamples = 10000000;
-  /// Fill CurveSamples::ArcLength and Length (the shape audit does not need them).
-  bool MeasureArcLength = true;
 };
+
+/// How many samples each span gets: decided before sampling, so that a caller
+/// can place every curve's samples in one output before computing any.
+struct SamplingPlan
+{
+  std::vector<long> PerSpan;
+  std::vector<double> SpanLengths; ///< in arc-length mode: where the samples go
+  bool LengthIncreased = false;    ///< the spacing was widened to respect MaximumSamples
+  bool Closed = false;
+
+  /// Number of samples: a closed curve does not repeat its seam point.
+  long size() const;
+};
+
+SamplingPlan planSamples(const Curve& curve, const SamplingOptions& options);
 
 /**
  * Samples of a curve: every knot is a sample, the samples of span j start at
@@ -35,7 +48,6 @@ struct CurveSamples
   std::vector<Derivatives> Values; ///< position and derivatives 1..3 (4th left zero)
   std::vector<double> ArcLength;   ///< from the first sample, by Gauss-Legendre quadrature
   double Length = 0.0;             ///< whole curve, including a closed curve's seam span
-  bool LengthIncreased = false;    ///< the spacing was widened to respect MaximumSamples
 
   int size() const { return static_cast<int>(this->Parameter.size()); }
 };
@@ -43,6 +55,7 @@ struct CurveSamples
 /// Arc length of curve between parameters a <= b inside one span (Gauss-Legendre).
 double arcLength(const Curve& curve, int span, double a, double b);
 
+CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan);
 CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options);
 } // namespace shapesplines
 

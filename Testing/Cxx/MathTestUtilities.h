@@ -65,16 +65,17 @@ inline RelativeErrors interiorErrors(
 {
   RelativeErrors errors;
   const int spans = fit.Data.numberOfSpans();
-  for (int k = 0; k < fit.Samples.size(); ++k)
+  const SampledCurve sampled = sampleFit(fit);
+  for (int k = 0; k < sampled.Samples.size(); ++k)
   {
-    const int span = fit.Samples.Span[k];
+    const int span = sampled.Samples.Span[k];
     if (span < margin || span >= spans - margin)
     {
       continue;
     }
     errors.Curvature =
-      std::max(errors.Curvature, std::abs(fit.Frames[k].Curvature - curvature) / curvature);
-    errors.Torsion = std::max(errors.Torsion, std::abs(fit.Frames[k].Torsion - torsion) / torsion);
+      std::max(errors.Curvature, std::abs(sampled.Frames[k].Curvature - curvature) / curvature);
+    errors.Torsion = std::max(errors.Torsion, std::abs(sampled.Frames[k].Torsion - torsion) / torsion);
   }
   return errors;
 }

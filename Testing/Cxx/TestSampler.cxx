@@ -89,9 +89,10 @@ TEST(Sampler, SampleBudgetWidensTheSpacing)
   options.SampleMode = SamplingOptions::Mode::ArcLength;
   options.TargetLength = 1e-12;
   options.MaximumSamples = 1000;
-  const CurveSamples samples = sampleCurve(s, options);
-  EXPECT_TRUE(samples.LengthIncreased);
-  EXPECT_LE(samples.size(), 1000 + 6);
+  const SamplingPlan plan = planSamples(s, options);
+  EXPECT_TRUE(plan.LengthIncreased);
+  EXPECT_LE(plan.size(), 1000 + 6);
+  EXPECT_EQ(sampleCurve(s, plan).size(), plan.size());
 }
 
 TEST(Sampler, ClosedCurvesDoNotRepeatTheSeam)

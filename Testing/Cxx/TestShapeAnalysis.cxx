@@ -21,11 +21,12 @@ int failures(const ShapeAudit& audit, ShapeCriterion criterion)
 template <typename Edit>
 std::vector<AuditSample> editedSamples(const FittedPolyline& fit, Edit edit)
 {
-  std::vector<AuditSample> samples(fit.Samples.size());
-  for (int k = 0; k < fit.Samples.size(); ++k)
+  const SampledCurve sampled = sampleFit(fit);
+  std::vector<AuditSample> samples(sampled.Samples.size());
+  for (int k = 0; k < sampled.Samples.size(); ++k)
   {
-    samples[k].Span = fit.Samples.Span[k];
-    samples[k].Frame = fit.Frames[k];
+    samples[k].Span = sampled.Samples.Span[k];
+    samples[k].Frame = sampled.Frames[k];
     edit(samples[k].Frame);
   }
   markKnots(samples, fit.Data.Closed);
