@@ -172,7 +172,7 @@ int vtkShapeSplineFilter::RequestData(
     vtkWarningMacro(<< otherCells << " non-line cells (vertices, polygons, strips) ignored.");
   }
 
-  // Gather the lines serially; fit them in parallel; assemble serially.
+  // Gather the lines serially; fit them in parallel (curve, audit, sampling plan).
   std::vector<LineWork> lines = GatherLines(input);
   shapesplines::FitOptions options;
   options.Knots = static_cast<shapesplines::Parameterization>(this->Parameterization);

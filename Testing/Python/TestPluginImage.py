@@ -96,8 +96,7 @@ lut.ApplyPreset("Turbo", True)
 lut.AutomaticRescaleRangeMode = "Never"
 lut.RescaleTransferFunction(*CURVATURE_RANGE)
 line.LineWidth = 4.0
-# Unlit, so the colours are the colour map's: the filter makes Normal the active
-# normals, and lit lines would be shaded by the Frenet normal's direction.
+# Unlit, so the colours are exactly the colour map's.
 line.Ambient = 1.0
 line.Diffuse = 0.0
 line.Scale = stretch

@@ -25,7 +25,7 @@ import numpy as np
 
 from paraview import servermanager
 from paraview.simple import (AssignViewToLayout, ColorBy, CreateLayout, CreateView, Delete, ExtractSelection,
-                             GetColorTransferFunction, GetScalarBar, IDSelectionSource, LoadPlugin, PassArrays,
+                             GetColorTransferFunction, GetScalarBar, IDSelectionSource, LoadPlugin,
                              Render, SaveData, SaveScreenshot, Show, Text, Tube, XMLPolyDataReader)
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
@@ -208,11 +208,7 @@ limit = float(np.percentile(np.abs(torsion), TORSION_PERCENTILE))
 saturated = 100.0 * np.mean(np.abs(torsion) > limit)
 W, H = 700, 1000
 view = white_render_view(W, H)
-# Tube around the curve. The filter makes the Frenet Normal the active normals,
-# which vtkTubeFilter would follow (twisting the tube where the normal swings):
-# pass only the scalars so that the tube builds its own sliding normals.
-scalars_only = PassArrays(Input=cubic, PointDataArrays=["Torsion", "Curvature"], CellDataArrays=[])
-tube = Tube(Input=scalars_only, Radius=0.6, NumberofSides=24)
+tube = Tube(Input=cubic, Radius=0.6, NumberofSides=24)
 tube_display = Show(tube, view)
 ColorBy(tube_display, ("POINTS", "Torsion"))
 lut = GetColorTransferFunction("Torsion")
