@@ -54,8 +54,10 @@ Eigen::MatrixX3d solveMoments(const std::vector<Vec3>& points, const std::vector
     const int last = n - 1;
     if (n == 2 || ends == CubicEndCondition::Natural)
     {
-      a.emplace_back(0, 0, 1.0);
-      a.emplace_back(last, last, 1.0);
+      // M = 0, scaled like the other rows (2h on the diagonal) so that pivoting
+      // keeps these rows and the end moments come out exactly zero.
+      a.emplace_back(0, 0, 2.0 * h[0]);
+      a.emplace_back(last, last, 2.0 * h[spans - 1]);
     }
     else if (ends == CubicEndCondition::NotAKnot)
     {

@@ -209,3 +209,24 @@ TEST(CubicSpline, LargeInputSolvesInLinearMemory)
   const CubicSpline s = CubicSpline::interpolate(line.Points, knots, false);
   EXPECT_LT((s.evaluate(knots[123456])[0] - line.Points[123456]).norm(), 1e-9);
 }
+
+TEST(CubicSpline, NaturalEndMomentsAreExactlyZeroAtAnyScale)
+{
+  // Regression: with chord lengths of 1e6 next to the unit row M_0 = 0, pivoting
+  // left M_0 at rounding level, and the curvature there (above the flatness
+  // floor) produced a torsion of 1e9. The end rows are now scaled like the others.
+  for (const double scale : { 1e-6, 1.0, 1e6 })
+  {
+    const RandomData data = randomData(10, 5);
+    std::vector<Vec3> points;
+    std::vector<double> knots;
+    for (size_t i = 0; i < data.Points.size(); ++i)
+    {
+      points.push_back(scale * data.Points[i]);
+      knots.push_back(scale * data.Knots[i]);
+    }
+    const CubicSpline s =
+      CubicSpline::interpolate(points, knots, false, CubicEndCondition::Natural);
+    EXPECT_EQ(s.evaluateOnSpan(0, knots.front(), 2)[2].norm(), 0.0) << scale;
+  }
+}

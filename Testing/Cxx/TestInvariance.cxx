@@ -1,0 +1,167 @@
+// Metamorphic tests: a rigid motion, a uniform scaling, a mirror or a
+// reversal of the data must transform the fitted curve the same way. Every
+// spline family joins by adding its builder to Families below.
+#include "MathTestUtilities.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <string>
+
+using namespace shapesplines;
+using namespace shapesplines::test;
+
+namespace
+{
+struct Family
+{
+  std::string Name;
+  CurveBuilder Build;
+  bool Closed;
+};
+
+std::vector<Family> Families()
+{
+  return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
+    { "CubicNatural", cubicBuilder(CubicEndCondition::Natural), false },
+    { "CubicClamped", cubicBuilder(CubicEndCondition::Clamped), false },
+    { "CubicPeriodic", cubicBuilder(), true } };
+}
+
+/// Uneven, non-planar data: a conical helix with a kink.
+std::vector<Vec3> testData()
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i < 14; ++i)
+  {
+    const double t = 0.55 * i + 0.03 * i * i;
+    points.emplace_back((1 + 0.2 * t) * std::cos(t), (1 + 0.2 * t) * std::sin(t), 0.4 * t);
+  }
+  points[7].z() += 0.3;
+  return points;
+}
+
+struct Fitted
+{
+  FittedPolyline Fit;
+  SampledCurve Sampled;
+};
+
+Fitted fit(const Family& family, const std::vector<Vec3>& points)
+{
+  FitOptions options;
+  options.Closed = family.Closed;
+  options.Sampling.Subdivisions = 7;
+  Fitted result{ fitPolyline(points, options, family.Build), {} };
+  result.Sampled = sampleFit(result.Fit);
+  return result;
+}
+
+double size(const std::vector<Vec3>& points)
+{
+  return boundingBoxDiagonal(points);
+}
+
+class Invariance : public ::testing::TestWithParam<Family>
+{
+};
+
+/// Positions map by `map`, curvature and torsion scale by 1/scale, torsion's sign by `handedness`.
+template <typename Map>
+void expectTransformed(const Family& family, Map map, double scale, double handedness)
+{
+  const std::vector<Vec3> data = testData();
+  std::vector<Vec3> moved;
+  for (const Vec3& p : data)
+  {
+    moved.push_back(map(p));
+  }
+  const Fitted a = fit(family, data);
+  const Fitted b = fit(family, moved);
+  ASSERT_EQ(a.Sampled.Samples.size(), b.Sampled.Samples.size());
+  const double extent = size(moved);
+  // Curvature that vanishes (natural ends) is compared with rounding, 1e-13 / size.
+  const double zeroCurvature = 1e-13 / size(data);
+  for (int k = 0; k < a.Sampled.Samples.size(); ++k)
+  {
+    const Vec3 expected = map(a.Sampled.Samples.Values[k][0]);
+    EXPECT_LT((b.Sampled.Samples.Values[k][0] - expected).norm(), 1e-12 * extent) << k;
+    const FrenetFrame& fa = a.Sampled.Frames[k];
+    const FrenetFrame& fb = b.Sampled.Frames[k];
+    EXPECT_NEAR(fb.Curvature * scale, fa.Curvature, 1e-10 * fa.Curvature + zeroCurvature) << k;
+    EXPECT_NEAR(fb.Torsion * scale, handedness * fa.Torsion, 1e-9 * (1 + std::abs(fa.Torsion))) << k;
+  }
+  EXPECT_EQ(a.Fit.Audit.violations(), b.Fit.Audit.violations());
+}
+} // namespace
+
+TEST_P(Invariance, RotationAndTranslation)
+{
+  const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(0.7, Vec3(1, -2, 0.5).normalized()).toRotationMatrix();
+  const Vec3 shift(3.5, -120.25, 7.0);
+  expectTransformed(GetParam(), [&](const Vec3& p) -> Vec3 { return rotation * p + shift; }, 1.0, 1.0);
+}
+
+TEST_P(Invariance, UniformScaling)
+{
+  for (const double s : { 1e-6, 0.37, 1e6 })
+  {
+    SCOPED_TRACE(s);
+    expectTransformed(GetParam(), [&](const Vec3& p) -> Vec3 { return s * p; }, s, 1.0);
+  }
+}
+
+TEST_P(Invariance, MirrorFlipsTorsionOnly)
+{
+  expectTransformed(
+    GetParam(), [](const Vec3& p) -> Vec3 { return Vec3(p.x(), -p.y(), p.z()); }, 1.0, -1.0);
+}
+
+TEST_P(Invariance, ReversalTracesTheSameCurveBackwards)
+{
+  const Family& family = GetParam();
+  std::vector<Vec3> data = testData();
+  const Fitted forward = fit(family, data);
+  std::reverse(data.begin(), data.end());
+  const Fitted backward = fit(family, data);
+  const auto& f = forward.Sampled;
+  const auto& b = backward.Sampled;
+  ASSERT_EQ(f.Samples.size(), b.Samples.size());
+  const int n = f.Samples.size();
+  const double extent = size(data);
+  for (int k = 0; k < n; ++k)
+  {
+    // Reversed, a closed line starts at its last point: the samples shift by a span.
+    const int r = family.Closed ? ((n - 7 - k) % n + n) % n : n - 1 - k;
+    EXPECT_LT((b.Samples.Values[r][0] - f.Samples.Values[k][0]).norm(), 1e-12 * extent) << k;
+    EXPECT_NEAR(b.Frames[r].Curvature, f.Frames[k].Curvature,
+      1e-9 * f.Frames[k].Curvature + 1e-13 / extent)
+      << k;
+    // At a knot the torsion is one-sided (the third derivative of a C2 curve
+    // jumps there): the sample takes the span after it, which reversal makes the
+    // span before it. Between knots it must agree.
+    if (k % 7 != 0)
+    {
+      EXPECT_NEAR(
+        b.Frames[r].Torsion, f.Frames[k].Torsion, 1e-8 * (1 + std::abs(f.Frames[k].Torsion)))
+        << k;
+    }
+    EXPECT_LT((b.Frames[r].Tangent + f.Frames[k].Tangent).norm(), 1e-10) << k;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, Invariance, ::testing::ValuesIn(Families()),
+  [](const ::testing::TestParamInfo<Family>& info) { return info.param.Name; });
+
+TEST(InvarianceLimits, CubicBendsAStraightRunBetweenCurvedData)
+{
+  // Four collinear points between curved neighbours: a C2 cubic cannot stay
+  // straight there (it would need zero second derivative at both ends of the
+  // run). Shape-preserving families must; the audit reports the cubic's bend.
+  const std::vector<Vec3> points = { Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0),
+    Vec3(4, 0, 0), Vec3(5, 1, 0) };
+  const FittedPolyline cubic = fitPolyline(points, FitOptions{}, cubicBuilder());
+  EXPECT_GT(cubic.Audit.Failures[static_cast<int>(ShapeCriterion::Collinearity)], 0);
+}
