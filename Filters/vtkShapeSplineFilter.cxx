@@ -328,11 +328,9 @@ int vtkShapeSplineFilter::RequestData(
       for (int s = 0; s < samples.size(); ++s)
       {
         const int span = samples.Span[s];
-        const double t0 = fit.Knots[span];
-        const double fraction = (samples.Parameter[s] - t0) / (fit.Knots[span + 1] - t0);
         const vtkIdType from = line.PointIds[fit.Data.SourceIndex[span]];
         const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
-        carried.Interpolate(next, from, to, fraction);
+        carried.Interpolate(next, from, to, samples.SpanFraction[s]);
         std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
         const auto& frame = sampled.Frames[s];
         curvature->SetValue(next, frame.Curvature);
@@ -376,7 +374,7 @@ int vtkShapeSplineFilter::RequestData(
     const double total = line.Length;
     const double chord = fit.Data.Closed || fit.Data.Points.size() < 2
       ? 0.0
-      : (fit.Data.Points.back() - fit.Data.Points.front()).norm();
+      : (fit.KnotPoints.back() - fit.KnotPoints.front()).norm();
     length->SetValue(c, total);
     tortuosity->SetValue(c, chord > 0 ? total / chord : 0.0);
   }

@@ -3,6 +3,7 @@
 #include "CubicSpline.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace shapesplines
@@ -92,17 +93,21 @@ SampledCurve sampleFit(const FittedPolyline& fit)
   samples = sampleCurve(*fit.Spline, fit.Plan);
   sampled.Frames =
     frenetFrames(samples.Values, flatCurvature(*fit.Spline, samples, fit.Data, fit.CoordinateNoise));
+  // Back to data units. The knot samples are the data points, exactly.
   for (int k = 0; k < samples.size(); ++k)
   {
-    // The knot samples are the data points, exactly (not shifted there and back).
     const int span = samples.Span[k];
+    const bool atKnot = samples.SpanFraction[k] == 0.0 ||
+      (!fit.Data.Closed && k == samples.size() - 1);
+    const int knot = samples.SpanFraction[k] == 0.0 ? span : span + 1;
     samples.Values[k][0] =
-      samples.Parameter[k] == fit.Knots[span] ? fit.KnotPoints[span] : Vec3(samples.Values[k][0] + fit.Origin);
+      atKnot ? fit.KnotPoints[knot] : Vec3(fit.Origin + fit.Scale * samples.Values[k][0]);
+    samples.Parameter[k] *= fit.ParameterScale;
+    samples.ArcLength[k] *= fit.Scale;
+    sampled.Frames[k].Curvature /= fit.Scale;
+    sampled.Frames[k].Torsion /= fit.Scale;
   }
-  if (!fit.Data.Closed)
-  {
-    samples.Values.back()[0] = fit.KnotPoints.back();
-  }
+  samples.Length *= fit.Scale;
   return sampled;
 }
 
@@ -130,13 +135,18 @@ FittedPolyline fitPolyline(
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  fit.Origin = 0.5 * (lo + hi);
-  fit.CoordinateNoise =
-    options.CoordinatePrecision * std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  // Extents, not norms: squares of 1e-170 or 1e170 under- or overflow.
+  fit.Origin = 0.5 * lo + 0.5 * hi;
+  fit.Scale = (0.5 * hi - 0.5 * lo).cwiseAbs().maxCoeff() * 2.0;
+  fit.CoordinateNoise = options.CoordinatePrecision *
+    std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) / fit.Scale;
   for (Vec3& p : fit.Data.Points)
   {
-    p -= fit.Origin;
+    p = (p - fit.Origin) / fit.Scale;
   }
+  fit.ParameterScale = options.Knots == Parameterization::ChordLength ? fit.Scale
+    : options.Knots == Parameterization::Centripetal                 ? std::sqrt(fit.Scale)
+                                                                      : 1.0;
   fit.Knots = computeKnots(fit.Data, options.Knots);
   if (fit.Data.Points.size() == 2)
   {
@@ -150,7 +160,9 @@ FittedPolyline fitPolyline(
   fit.Shape = discreteShape(fit.Data, options.Tolerances);
   fit.Audit = auditCurve(*fit.Spline, fit.Data, fit.Shape, options.Tolerances,
     options.AuditSubdivisions, fit.CoordinateNoise);
-  fit.Plan = planSamples(*fit.Spline, options.Sampling);
+  SamplingOptions sampling = options.Sampling;
+  sampling.TargetLength /= fit.Scale; // the curve is normalised; the option is in data units
+  fit.Plan = planSamples(*fit.Spline, sampling);
   return fit;
 }
 } // namespace shapesplines

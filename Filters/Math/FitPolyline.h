@@ -39,21 +39,26 @@ using CurveBuilder =
  */
 struct FittedPolyline
 {
-  /// The cleaned points relative to Origin, the centre of their bounding box: the
-  /// spline is fitted there, so rounding scales with the line's size, not with its
-  /// distance from the coordinate origin. Samples are in input coordinates.
+  /// The cleaned points in a normalised frame, (p - Origin) / Scale: centred on
+  /// their bounding box and of unit extent. The spline is fitted there, so
+  /// rounding scales with the line's size, not with its distance from the
+  /// coordinate origin, and no coordinate size (1e-160 or 1e160) over- or
+  /// underflows. sampleFit() returns data units.
   CleanPolyline Data;
   Vec3 Origin = Vec3::Zero();
+  double Scale = 1.0;           ///< largest extent of the bounding box
+  double ParameterScale = 1.0;  ///< data-unit parameter per normalised parameter
   std::vector<Vec3> KnotPoints; ///< the cleaned points in input coordinates
-  double CoordinateNoise = 0.0; ///< absolute rounding of the input coordinates
-  std::vector<double> Knots;
+  double CoordinateNoise = 0.0; ///< rounding of the input coordinates, normalised
+  std::vector<double> Knots;    ///< normalised parameter
   std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
   DiscreteShape Shape;
   ShapeAudit Audit;
   SamplingPlan Plan;
 };
 
-/// A fitted curve's samples (in input coordinates) and their Frenet frames.
+/// A fitted curve's samples and their Frenet frames, in data units (positions,
+/// parameter, arc length, curvature, torsion); derivatives stay normalised.
 struct SampledCurve
 {
   CurveSamples Samples;

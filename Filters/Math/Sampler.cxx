@@ -128,9 +128,11 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan)
   samples.Parameter.reserve(count);
   samples.Span.reserve(count);
   samples.Values.reserve(count);
+  samples.SpanFraction.reserve(count);
   auto addSample = [&](int span, double t) {
     samples.Parameter.push_back(t);
     samples.Span.push_back(span);
+    samples.SpanFraction.push_back((t - knots[span]) / (knots[span + 1] - knots[span]));
     samples.Values.push_back(curve.evaluateOnSpan(span, t, 3));
   };
   for (int j = 0; j < spans; ++j)

@@ -45,6 +45,7 @@ struct CurveSamples
 {
   std::vector<double> Parameter;
   std::vector<int> Span;
+  std::vector<double> SpanFraction; ///< (t - t_span) / (t_span+1 - t_span), in [0, 1]
   std::vector<Derivatives> Values; ///< position and derivatives 1..3 (4th left zero)
   std::vector<double> ArcLength;   ///< from the first sample, by Gauss-Legendre quadrature
   double Length = 0.0;             ///< whole curve, including a closed curve's seam span

@@ -47,41 +47,48 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
   shape.Twisted.assign(std::max(spans, 0), 0);
   auto interior = [&](int i) { return data.Closed || (i > 0 && i < n - 1); };
 
+  // Unit segments and lengths by stableNorm: products of raw lengths under- or
+  // overflow for coordinates of 1e-160 or 1e160.
+  std::vector<Vec3> unit(std::max(spans, 0));
+  std::vector<double> length(std::max(spans, 0));
+  for (int i = 0; i < spans; ++i)
+  {
+    const Vec3 segment = data.segment(i);
+    length[i] = segment.stableNorm();
+    unit[i] = length[i] > 0 ? Vec3(segment / length[i]) : Vec3::Zero();
+  }
   for (int i = 0; i < n; ++i)
   {
-    if (!interior(i))
+    const int before = (i - 1 + n) % n;
+    if (!interior(i) || !(length[before] > 0 && length[i] > 0))
     {
       continue;
     }
-    const Vec3 before = data.segment((i - 1 + n) % n);
-    const Vec3 after = data.segment(i);
-    const double lengths = before.norm() * after.norm();
-    if (!(lengths > 0))
-    {
-      continue;
-    }
-    shape.Binormal[i] = before.cross(after) / lengths;
+    shape.Binormal[i] = unit[before].cross(unit[i]);
     // Menger curvature: 1 / radius of the circle through the three points.
-    shape.Curvature[i] = 2.0 * shape.Binormal[i].norm() / (before + after).norm();
+    const double chord = (data.segment(before) + data.segment(i)).stableNorm();
+    shape.Curvature[i] = 2.0 * shape.Binormal[i].norm() / chord;
     const bool straight = shape.Binormal[i].norm() <= tolerances.Data;
-    shape.Collinear[i] = straight && before.dot(after) > 0;
+    shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Convex[i] = !straight;
   }
   for (int i = 0; i < spans; ++i)
   {
+    const int before = (i - 1 + n) % n;
     const int next = (i + 1) % n;
     if (!interior(i) || !interior(next))
     {
       continue;
     }
-    const Vec3 a = data.segment((i - 1 + n) % n);
-    const Vec3 b = data.segment(i);
-    const Vec3 c = data.segment(next);
+    // Delta_i = det(L_{i-1}, L_i, L_{i+1}) / (|L_{i-1} x L_i| |L_i x L_{i+1}|),
+    // written with unit segments: det(a, b, c) / (|L_i| |a x b| |b x c|).
+    const Vec3& a = unit[before];
+    const Vec3& b = unit[i];
+    const Vec3& c = unit[next];
     const double triple = a.dot(b.cross(c));
     const double crosses = a.cross(b).norm() * b.cross(c).norm();
-    const double scaleFree = triple / (a.norm() * b.norm() * c.norm());
-    const bool flat = std::abs(scaleFree) <= tolerances.Data || !(crosses > 0);
-    shape.Torsion[i] = flat ? 0.0 : triple / crosses;
+    const bool flat = std::abs(triple) <= tolerances.Data || !(crosses > 0);
+    shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat;
     shape.Twisted[i] = !flat;
   }
