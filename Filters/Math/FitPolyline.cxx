@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace shapesplines
@@ -37,6 +38,17 @@ private:
   double Noise;
   double Floor = 0.0;
 };
+/**
+ * A curvature or torsion back in data units. At a hairpin of a line only
+ * 1e-100 wide the true value exceeds the double range: it saturates at the
+ * largest double instead of becoming Inf.
+ */
+double toDataUnits(double perNormalisedLength, double scale)
+{
+  const double value = perNormalisedLength / scale;
+  constexpr double largest = std::numeric_limits<double>::max();
+  return std::isfinite(value) ? value : std::copysign(largest, perNormalisedLength);
+}
 } // namespace
 
 std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
@@ -104,8 +116,8 @@ SampledCurve sampleFit(const FittedPolyline& fit)
       atKnot ? fit.KnotPoints[knot] : Vec3(fit.Origin + fit.Scale * samples.Values[k][0]);
     samples.Parameter[k] *= fit.ParameterScale;
     samples.ArcLength[k] *= fit.Scale;
-    sampled.Frames[k].Curvature /= fit.Scale;
-    sampled.Frames[k].Torsion /= fit.Scale;
+    sampled.Frames[k].Curvature = toDataUnits(sampled.Frames[k].Curvature, fit.Scale);
+    sampled.Frames[k].Torsion = toDataUnits(sampled.Frames[k].Torsion, fit.Scale);
   }
   samples.Length *= fit.Scale;
   return sampled;

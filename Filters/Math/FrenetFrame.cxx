@@ -6,6 +6,14 @@ namespace shapesplines
 {
 namespace
 {
+/// |v|, also where squaring under- or overflows (derivatives at a hairpin of a
+/// line 1e-100 wide): the fast norm where it is exact, stableNorm elsewhere.
+double robustNorm(const Vec3& v)
+{
+  const double fast = v.norm();
+  return fast > 1e-140 && fast < 1e140 ? fast : v.stableNorm();
+}
+
 /// A unit vector orthogonal to unit t, from the coordinate axis least aligned with it.
 Vec3 anyNormal(const Vec3& t)
 {
@@ -43,15 +51,15 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
     const Vec3& d2 = samples[k][2];
     const Vec3& d3 = samples[k][3];
     FrenetFrame& f = frames[k];
-    const double speed = d1.norm();
+    const double speed = robustNorm(d1);
     // A stationary point (s' = 0) keeps the direction of s'', or the last tangent.
     if (speed > 0)
     {
       f.Tangent = d1 / speed;
     }
-    else if (d2.norm() > 0)
+    else if (robustNorm(d2) > 0)
     {
-      f.Tangent = d2.normalized();
+      f.Tangent = d2 / robustNorm(d2);
     }
     else
     {
@@ -59,7 +67,7 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
     }
     lastTangent = f.Tangent;
     const Vec3 cross = d1.cross(d2);
-    const double crossNorm = cross.norm();
+    const double crossNorm = robustNorm(cross);
     const double curvature = speed > 0 ? crossNorm / (speed * speed * speed) : 0.0;
     f.Curvature = std::isfinite(curvature) ? curvature : 0.0;
     if (f.Curvature > flatCurvature[k])
