@@ -140,13 +140,7 @@ FittedPolyline fitPolyline(
     return fit;
   }
   fit.KnotPoints = fit.Data.Points;
-  Vec3 lo = fit.Data.Points.front();
-  Vec3 hi = lo;
-  for (const Vec3& p : fit.Data.Points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
+  const auto [lo, hi] = boundingBox(fit.Data.Points);
   // Extents, not norms: squares of 1e-170 or 1e170 under- or overflow.
   fit.Origin = 0.5 * lo + 0.5 * hi;
   fit.Scale = (0.5 * hi - 0.5 * lo).cwiseAbs().maxCoeff() * 2.0;

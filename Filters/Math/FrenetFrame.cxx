@@ -14,6 +14,13 @@ double robustNorm(const Vec3& v)
   return fast > 1e-140 && fast < 1e140 ? fast : v.stableNorm();
 }
 
+/// v / |v| of unit length even for subnormal v: scaled by its largest component first.
+Vec3 unitVector(const Vec3& v)
+{
+  const Vec3 scaled = v / v.cwiseAbs().maxCoeff();
+  return scaled / scaled.norm();
+}
+
 /// A unit vector orthogonal to unit t, from the coordinate axis least aligned with it.
 Vec3 anyNormal(const Vec3& t)
 {
@@ -55,11 +62,11 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
     // A stationary point (s' = 0) keeps the direction of s'', or the last tangent.
     if (speed > 0)
     {
-      f.Tangent = d1 / speed;
+      f.Tangent = unitVector(d1);
     }
     else if (robustNorm(d2) > 0)
     {
-      f.Tangent = d2 / robustNorm(d2);
+      f.Tangent = unitVector(d2);
     }
     else
     {
@@ -73,7 +80,7 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
     if (f.Curvature > flatCurvature[k])
     {
       // Orthonormalise against the tangent: near-parallel s', s'' round badly.
-      f.Normal = (cross / crossNorm).cross(f.Tangent).normalized();
+      f.Normal = unitVector(unitVector(cross).cross(f.Tangent));
       f.Binormal = f.Tangent.cross(f.Normal);
       f.Torsion = d1.dot(d2.cross(d3)) / (crossNorm * crossNorm);
       defined[k] = true;

@@ -10,12 +10,8 @@ Vec3 CleanPolyline::segment(int i) const
   return this->Points[(i + 1) % n] - this->Points[i];
 }
 
-double boundingBoxDiagonal(const std::vector<Vec3>& points)
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points)
 {
-  if (points.empty())
-  {
-    return 0.0;
-  }
   Vec3 lo = points.front();
   Vec3 hi = points.front();
   for (const Vec3& p : points)
@@ -23,7 +19,17 @@ double boundingBoxDiagonal(const std::vector<Vec3>& points)
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
-  return (hi - lo).norm();
+  return { lo, hi };
+}
+
+double boundingBoxDiagonal(const std::vector<Vec3>& points)
+{
+  if (points.empty())
+  {
+    return 0.0;
+  }
+  const auto [lo, hi] = boundingBox(points);
+  return (hi - lo).stableNorm(); // no overflow for coordinates of 1e160
 }
 
 CleanPolyline cleanPolyline(

@@ -4,6 +4,7 @@
 
 #include "Curve.h"
 
+#include <utility>
 #include <vector>
 
 namespace shapesplines
@@ -35,6 +36,9 @@ struct CleanPolyline
   /// I_{i+1} - I_i, with I_n = I_0 on a closed line.
   Vec3 segment(int i) const;
 };
+
+/// Lowest and highest corner of the axis-aligned bounding box (points not empty).
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points);
 
 /// Diagonal of the axis-aligned bounding box (0 for no or identical points).
 double boundingBoxDiagonal(const std::vector<Vec3>& points);

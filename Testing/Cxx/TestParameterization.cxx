@@ -61,3 +61,13 @@ TEST(Parameterization, AllPointsIdentical)
   EXPECT_FALSE(line.Closed);
   EXPECT_EQ(line.numberOfSpans(), 0);
 }
+
+TEST(Parameterization, HugeCoordinatesAreNotMergedAway)
+{
+  // The diagonal of 1e160-sized data squares past the double range; the merge
+  // tolerance must not become infinite and swallow every point.
+  const CleanPolyline line =
+    cleanPolyline({ Vec3(0, 0, 0), Vec3(1e160, 0, 0), Vec3(1e160, 2e160, 0) }, false);
+  EXPECT_EQ(line.Points.size(), 3u);
+  EXPECT_NEAR(boundingBoxDiagonal(line.Points), std::sqrt(5.0) * 1e160, 1e146);
+}

@@ -104,6 +104,12 @@ def regressions():
     # Below L ~ 1e-154 the cubic coefficient (M1 - M0) / (6 h) itself overflows: the
     # sample positions are +-inf.
     yield "position_inf_tiny_chord_length", header(ends=NATURAL) + doubles(tiny_corner(1e-160))
+    # A hairpin out to x = 1 and back to the origin, missed by 1e-320 in y and 1e-321
+    # in z: at the apex s' is a subnormal vector, whose few significant bits make
+    # s' / |s'| 1 + 2.7e-5 long however |s'| is computed (scale it by a power of two
+    # first, or treat |s'| below DBL_MIN as a stationary point).
+    yield "tangent_not_unit_subnormal_speed", header(ends=NOT_A_KNOT) + doubles(
+        [(0, 0, 0), (1, 0, 0), (0, 1e-320, 1e-321)])
 
 
 def extra_regressions():
