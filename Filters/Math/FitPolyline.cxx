@@ -154,6 +154,22 @@ FittedPolyline fitPolyline(
     : options.Knots == Parameterization::Centripetal                 ? std::sqrt(fit.Scale)
                                                                       : 1.0;
   fit.Knots = computeKnots(fit.Data, options.Knots);
+  // A span below the resolution of the cumulative parameter (1e-24 after a
+  // span of 1) is a repeated point too: merge it rather than fail the solve.
+  for (size_t i = 1; i < fit.Knots.size() && fit.Data.Points.size() > 2; ++i)
+  {
+    if (!(fit.Knots[i] > fit.Knots[i - 1]))
+    {
+      const size_t drop = i % fit.Data.Points.size(); // the closing span drops point 0
+      fit.Data.Points.erase(fit.Data.Points.begin() + drop);
+      fit.Data.SourceIndex.erase(fit.Data.SourceIndex.begin() + drop);
+      fit.KnotPoints.erase(fit.KnotPoints.begin() + drop);
+      ++fit.Data.MergedPoints;
+      fit.Data.Closed = fit.Data.Closed && fit.Data.Points.size() >= 3;
+      fit.Knots = computeKnots(fit.Data, options.Knots);
+      i = 0;
+    }
+  }
   if (fit.Data.Points.size() == 2)
   {
     fit.Spline = std::make_unique<CubicSpline>(

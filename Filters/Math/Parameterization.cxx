@@ -39,7 +39,7 @@ CleanPolyline cleanPolyline(
   const double tolerance = relativeTolerance * boundingBoxDiagonal(points);
   for (int i = 0; i < static_cast<int>(points.size()); ++i)
   {
-    if (!line.Points.empty() && (points[i] - line.Points.back()).norm() <= tolerance)
+    if (!line.Points.empty() && (points[i] - line.Points.back()).stableNorm() <= tolerance)
     {
       ++line.MergedPoints;
       continue;
@@ -48,7 +48,7 @@ CleanPolyline cleanPolyline(
     line.SourceIndex.push_back(i);
   }
   const bool seamRepeated =
-    line.Points.size() > 1 && (line.Points.back() - line.Points.front()).norm() <= tolerance;
+    line.Points.size() > 1 && (line.Points.back() - line.Points.front()).stableNorm() <= tolerance;
   if (seamRepeated)
   {
     line.Points.pop_back();
@@ -71,7 +71,7 @@ std::vector<double> computeKnots(const CleanPolyline& line, Parameterization kin
   std::vector<double> knots(spans + 1, 0.0);
   for (int i = 0; i < spans; ++i)
   {
-    const double chord = line.segment(i).norm();
+    const double chord = line.segment(i).stableNorm();
     double step = 1.0;
     if (kind == Parameterization::ChordLength)
     {
