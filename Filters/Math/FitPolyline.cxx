@@ -132,6 +132,11 @@ FittedPolyline fitPolyline(
     {
       throw std::invalid_argument("point " + std::to_string(i) + " is not finite");
     }
+    if (points[i].cwiseAbs().maxCoeff() > LargestCoordinate)
+    {
+      throw std::invalid_argument("point " + std::to_string(i) +
+        " has a coordinate beyond 1e300, where the curve can leave the double range");
+    }
   }
   FittedPolyline fit;
   fit.Data = cleanPolyline(points, options.Closed);

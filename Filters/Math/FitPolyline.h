@@ -79,10 +79,15 @@ std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& sample
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
 
+/// Coordinates beyond this are refused: a curve through them (its overshoot,
+/// its arc length) can leave the double range.
+constexpr double LargestCoordinate = 1e300;
+
 /**
  * Cleans the points, computes knots, builds the curve (two distinct points
  * give the straight segment whatever the family), audits its shape and plans
- * its sampling. Throws std::invalid_argument for non-finite points.
+ * its sampling. Throws std::invalid_argument for non-finite points and for
+ * coordinates beyond LargestCoordinate.
  */
 FittedPolyline fitPolyline(
   const std::vector<Vec3>& points, const FitOptions& options, const CurveBuilder& build);

@@ -356,9 +356,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     return -1; // libFuzzer: do not add this input to the corpus
   }
   bool finite = true;
+  bool inRange = true; // coordinates beyond ss::LargestCoordinate are refused
   for (const ss::Vec3& p : points)
   {
     finite = finite && p.allFinite();
+    inRange = inRange && !(p.cwiseAbs().maxCoeff() > ss::LargestCoordinate);
   }
 
   checkCleaning(points, options);
@@ -377,7 +379,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   catch (const std::invalid_argument& e)
   {
-    CHECK(!finite, "fitPolyline threw std::invalid_argument on finite input (%zu points): %s",
+    CHECK(!finite || !inRange,
+      "fitPolyline threw std::invalid_argument on finite input in range (%zu points): %s",
       points.size(), e.what());
     return 0;
   }
@@ -390,7 +393,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     fail("fitPolyline threw a non-standard exception");
   }
-  CHECK(finite, "fitPolyline accepted non-finite input without throwing std::invalid_argument");
+  CHECK(finite && inRange,
+    "fitPolyline accepted non-finite or out-of-range input without std::invalid_argument");
 
   const int n = static_cast<int>(fit.Data.Points.size());
   if (!fit.Spline)
