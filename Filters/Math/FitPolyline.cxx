@@ -67,6 +67,7 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
 {
   // Span by span: the audit keeps no samples, so auditing costs no memory traffic.
+  subdivisions = std::max(subdivisions, 1);
   const FlatnessThreshold flat(curve, data, coordinateNoise);
   ShapeAuditor auditor(data, shape, tolerances);
   const auto& knots = curve.knots();

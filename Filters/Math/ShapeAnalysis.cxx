@@ -67,7 +67,8 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Binormal[i] = unit[before].cross(unit[i]);
     // Menger curvature: 1 / radius of the circle through the three points.
     const double chord = (data.segment(before) + data.segment(i)).stableNorm();
-    shape.Curvature[i] = 2.0 * shape.Binormal[i].norm() / chord;
+    // A line that doubles back exactly (I_{i+1} = I_{i-1}) has no circle: 0, not 0/0.
+    shape.Curvature[i] = chord > 0 ? 2.0 * shape.Binormal[i].norm() / chord : 0.0;
     const bool straight = shape.Binormal[i].norm() <= tolerances.Data;
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Convex[i] = !straight;

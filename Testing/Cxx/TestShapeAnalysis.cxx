@@ -138,3 +138,15 @@ TEST(ShapeAudit, VanishingValuesAreNotSignChanges)
   }));
   EXPECT_TRUE(audit.preserving());
 }
+
+TEST(DiscreteShape, ExactDoublingBackIsFinite)
+{
+  // Regression (fuzzing): I_{i+1} = I_{i-1} made the Menger curvature 0/0.
+  const DiscreteShape shape = discreteShape(
+    cleanPolyline({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(0, 1, 0) }, false));
+  for (const double k : shape.Curvature)
+  {
+    EXPECT_TRUE(std::isfinite(k));
+  }
+  EXPECT_FALSE(shape.Collinear[1]); // turning back is not a straight run
+}
