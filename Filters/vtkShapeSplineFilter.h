@@ -25,8 +25,8 @@
  *
  * Lines with one distinct point are passed through unchanged (zero frame) and
  * lines with two distinct points become straight segments, each with a
- * warning; lines with NaN or Inf coordinates are skipped with an error naming
- * the cell; vertices, polygons and strips are ignored with a warning. The
+ * warning; lines with NaN or Inf coordinates, or a coordinate beyond 1e300,
+ * are skipped with an error naming the cell; vertices, polygons and strips are ignored with a warning. The
  * input is never modified. Lines are processed in parallel with vtkSMPTools.
  *
  * @sa vtkCubicSplineFilter vtkPolylineShapeAnalysis vtkSplineFilter

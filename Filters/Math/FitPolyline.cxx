@@ -38,6 +38,7 @@ private:
   double Noise;
   double Floor = 0.0;
 };
+
 /**
  * A curvature or torsion back in data units. At a hairpin of a line only
  * 1e-100 wide the true value exceeds the double range: it saturates at the
