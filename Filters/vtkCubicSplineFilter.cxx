@@ -1,7 +1,7 @@
 #include "vtkCubicSplineFilter.h"
 
 #include "CubicSpline.h"
-#include "Parameterization.h"
+#include "FitPolyline.h"
 
 #include "vtkObjectFactory.h"
 
@@ -23,11 +23,14 @@ const char* vtkCubicSplineFilter::GetEndConditionAsString()
   }
 }
 
-std::unique_ptr<shapesplines::Curve> vtkCubicSplineFilter::BuildCurve(
-  const shapesplines::CleanPolyline& data, const std::vector<double>& knots) const
+shapesplines::BuiltCurve vtkCubicSplineFilter::BuildCurve(
+  const shapesplines::FitContext& context) const
 {
-  return std::make_unique<shapesplines::CubicSpline>(shapesplines::CubicSpline::interpolate(
-    data.Points, knots, data.Closed, static_cast<shapesplines::CubicEndCondition>(this->EndCondition)));
+  shapesplines::BuiltCurve built;
+  built.Spline = std::make_unique<shapesplines::CubicSpline>(
+    shapesplines::CubicSpline::interpolate(context.Data.Points, context.Knots, context.Data.Closed,
+      static_cast<shapesplines::CubicEndCondition>(this->EndCondition)));
+  return built;
 }
 
 void vtkCubicSplineFilter::PrintSelf(ostream& os, vtkIndent indent)

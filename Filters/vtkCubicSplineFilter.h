@@ -54,8 +54,7 @@ protected:
   ~vtkCubicSplineFilter() override;
 
 #ifndef __VTK_WRAP__
-  std::unique_ptr<shapesplines::Curve> BuildCurve(const shapesplines::CleanPolyline& data,
-    const std::vector<double>& knots) const override;
+  shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
 
   int EndCondition = NOT_A_KNOT;

@@ -22,6 +22,7 @@
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -34,6 +35,7 @@ struct LineWork
   std::vector<vtkIdType> PointIds;
   shapesplines::FittedPolyline Fit;
   double Length = 0.0; ///< of the sampled curve
+  double Chord = 0.0;  ///< distance between its ends (0 when closed)
   std::string Error;
 };
 
@@ -120,6 +122,26 @@ private:
   std::vector<Transfer> Arrays;
 };
 
+/**
+ * The data points around sample s and its fraction of the way between them:
+ * its span for an interpolation, whose knots are the data's; for an
+ * approximation, whose knots are its own, found from its parameter.
+ */
+std::pair<int, double> DataInterval(
+  const shapesplines::FittedPolyline& fit, const shapesplines::CurveSamples& samples, int s)
+{
+  if (fit.interpolates())
+  {
+    return { samples.Span[s], samples.SpanFraction[s] };
+  }
+  const std::vector<double>& knots = fit.Knots;
+  const double t = samples.Parameter[s] / fit.ParameterScale;
+  const auto after = std::upper_bound(knots.begin() + 1, knots.end() - 1, t);
+  const int interval = static_cast<int>(after - knots.begin()) - 1;
+  const double width = knots[interval + 1] - knots[interval];
+  return { interval, std::clamp((t - knots[interval]) / width, 0.0, 1.0) };
+}
+
 template <typename Array>
 vtkSmartPointer<Array> Renamed(Array* source, const char* name)
 {
@@ -188,9 +210,8 @@ int vtkShapeSplineFilter::RequestData(
   options.CoordinatePrecision = input->GetPoints()->GetDataType() == VTK_FLOAT
     ? std::numeric_limits<float>::epsilon()
     : std::numeric_limits<double>::epsilon();
-  const shapesplines::CurveBuilder build = [this](const shapesplines::CleanPolyline& data,
-                                             const std::vector<double>& knots) {
-    return this->BuildCurve(data, knots);
+  const shapesplines::CurveBuilder build = [this](const shapesplines::FitContext& context) {
+    return this->BuildCurve(context);
   };
 
   vtkPoints* inPoints = input->GetPoints();
@@ -256,6 +277,16 @@ int vtkShapeSplineFilter::RequestData(
     kept.push_back(k);
     firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
   }
+  // The families' shape parameters (the same names on every line of a family;
+  // lines too short for the family's curve have none).
+  std::vector<shapesplines::SpanParameter> parameterNames;
+  for (const size_t k : kept)
+  {
+    if (lines[k].Fit.Spline && parameterNames.empty())
+    {
+      parameterNames = lines[k].Fit.Spline->spanParameters();
+    }
+  }
   const vtkIdType outputSize = firstSample.back();
   const auto lineCount = static_cast<vtkIdType>(kept.size());
 
@@ -278,6 +309,16 @@ int vtkShapeSplineFilter::RequestData(
   vtkNew<vtkIntArray> spanIndex;
   spanIndex->SetName("SpanIndex");
   spanIndex->SetNumberOfTuples(outputSize);
+  std::vector<vtkSmartPointer<vtkDoubleArray>> shapeParameters;
+  std::vector<vtkSmartPointer<vtkDoubleArray>> shapeParameterSummaries;
+  for (const auto& p : parameterNames)
+  {
+    shapeParameters.push_back(NewArray(p.Name.c_str(), 1, outputSize));
+    shapeParameters.back()->FillValue(0.0);
+    const std::string summary = (p.CellSummaryIsMaximum ? "Max" : "Min") + p.Name;
+    shapeParameterSummaries.push_back(NewArray(summary.c_str(), 1, lineCount));
+    shapeParameterSummaries.back()->FillValue(0.0);
+  }
   // Closed lines repeat their first sample id at the end of their cell.
   vtkNew<vtkIdTypeArray> cellOffsets;
   cellOffsets->SetNumberOfTuples(lineCount + 1);
@@ -324,13 +365,22 @@ int vtkShapeSplineFilter::RequestData(
       const shapesplines::SampledCurve sampled = shapesplines::sampleFit(fit);
       const auto& samples = sampled.Samples;
       line.Length = samples.Length;
+      line.Chord = fit.Data.Closed
+        ? 0.0
+        : (samples.Values.back()[0] - samples.Values.front()[0]).norm();
+      const std::vector<shapesplines::SpanParameter> lineParameters = fit.Spline->spanParameters();
       const int knotCount = static_cast<int>(fit.Data.Points.size());
       for (int s = 0; s < samples.size(); ++s)
       {
         const int span = samples.Span[s];
-        const vtkIdType from = line.PointIds[fit.Data.SourceIndex[span]];
-        const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(span + 1) % knotCount]];
-        carried.Interpolate(next, from, to, samples.SpanFraction[s]);
+        const auto [interval, fraction] = DataInterval(fit, samples, s);
+        const vtkIdType from = line.PointIds[fit.Data.SourceIndex[interval]];
+        const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(interval + 1) % knotCount]];
+        carried.Interpolate(next, from, to, fraction);
+        for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
+        {
+          shapeParameters[p]->SetValue(next, lineParameters[p].Values[span]);
+        }
         std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
         const auto& frame = sampled.Frames[s];
         curvature->SetValue(next, frame.Curvature);
@@ -372,11 +422,20 @@ int vtkShapeSplineFilter::RequestData(
     preserving->SetValue(c, count == 0 ? 1 : 0);
     violations->SetValue(c, count);
     const double total = line.Length;
-    const double chord = fit.Data.Closed || fit.Data.Points.size() < 2
-      ? 0.0
-      : (fit.KnotPoints.back() - fit.KnotPoints.front()).norm();
     length->SetValue(c, total);
-    tortuosity->SetValue(c, chord > 0 ? total / chord : 0.0);
+    tortuosity->SetValue(c, line.Chord > 0 ? total / line.Chord : 0.0);
+    const auto lineParameters =
+      fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
+    for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
+    {
+      const auto& values = lineParameters[p].Values;
+      if (!values.empty())
+      {
+        shapeParameterSummaries[p]->SetValue(c, lineParameters[p].CellSummaryIsMaximum
+            ? *std::max_element(values.begin(), values.end())
+            : *std::min_element(values.begin(), values.end()));
+      }
+    }
   }
 
   output->SetPoints(outPoints);
@@ -385,6 +444,10 @@ int vtkShapeSplineFilter::RequestData(
   carried.AddTo(outPD);
   for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ curvature, torsion,
          tangent, normal, binormal, parameter, arcLength, spanIndex })
+  {
+    outPD->AddArray(a);
+  }
+  for (const auto& a : shapeParameters)
   {
     outPD->AddArray(a);
   }
@@ -397,6 +460,10 @@ int vtkShapeSplineFilter::RequestData(
   }
   for (vtkAbstractArray* a :
     std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity })
+  {
+    outCD->AddArray(a);
+  }
+  for (const auto& a : shapeParameterSummaries)
   {
     outCD->AddArray(a);
   }

@@ -17,10 +17,14 @@
  *   shape of the data (paper 001, Definition 1).
  *
  * Output point arrays: Curvature, Torsion, Tangent, Normal, Binormal,
- * Parameter, ArcLength, SpanIndex, and the input point arrays interpolated
- * along each span. Output cell arrays: ShapePreserving, ShapeViolations,
- * Length, Tortuosity (length / end-to-end distance, 0 for closed lines), and
- * the input cell arrays. With VMTKArrayNames on, the frame is also written as
+ * Parameter, ArcLength, SpanIndex, the family's shape parameters per span
+ * (e.g. Degree, Tension; 0 on lines too short for the family's curve), and
+ * the input point arrays interpolated between the data points around each
+ * sample. Output cell arrays: ShapePreserving, ShapeViolations, Length,
+ * Tortuosity (length / end-to-end distance, 0 for closed lines), the
+ * summary of each shape parameter (Max<Name> or Min<Name>), and the input
+ * cell arrays. An approximating family audits its curve against the polygon
+ * whose shape it keeps rather than against the data. With VMTKArrayNames on, the frame is also written as
  * FrenetTangent, FrenetNormal and FrenetBinormal.
  *
  * Lines with one distinct point are passed through unchanged (zero frame) and
@@ -38,12 +42,10 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #ifndef __VTK_WRAP__
-#include <memory> // for std::unique_ptr
-#include <vector> // for std::vector
 namespace shapesplines
 {
-class Curve;
-struct CleanPolyline;
+struct BuiltCurve;
+struct FitContext;
 }
 #endif
 
@@ -161,12 +163,12 @@ protected:
 
 #ifndef __VTK_WRAP__
   /**
-   * The family's curve through data (at least three distinct points) at the
-   * given knots. Called concurrently for different lines: must not modify the
-   * filter. Throws std::exception with a message on failure.
+   * The family's curve for one line's cleaned data (at least three distinct
+   * points) and knots, in the normalised frame of the context. Called
+   * concurrently for different lines: must not modify the filter. Throws
+   * std::exception with a message on failure.
    */
-  virtual std::unique_ptr<shapesplines::Curve> BuildCurve(
-    const shapesplines::CleanPolyline& data, const std::vector<double>& knots) const = 0;
+  virtual shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const = 0;
 #endif
 
   int Parameterization = CHORD_LENGTH;

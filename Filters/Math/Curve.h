@@ -6,6 +6,7 @@
 #include <Eigen/Geometry> // cross products
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace shapesplines
@@ -15,6 +16,15 @@ using Vec3 = Eigen::Vector3d;
 /// Position and derivatives 0..MaxDerivativeOrder at one parameter value.
 constexpr int MaxDerivativeOrder = 4;
 using Derivatives = std::array<Vec3, MaxDerivativeOrder + 1>;
+
+/// A family's shape parameter per span (degree, tension...), which the filters
+/// write out generically: a point array Name and a cell array Max<Name> or Min<Name>.
+struct SpanParameter
+{
+  std::string Name;
+  std::vector<double> Values; ///< one per span
+  bool CellSummaryIsMaximum = true;
+};
 
 /**
  * A piecewise curve s(t) on knots t_0 < t_1 < ... < t_n (n spans). Families
@@ -42,6 +52,9 @@ public:
 
   /// Same, with the span already known (t may lie on either end of it).
   virtual Derivatives evaluateOnSpan(int span, double t, int order) const = 0;
+
+  /// The shape parameters chosen per span; none for a family without any.
+  virtual std::vector<SpanParameter> spanParameters() const { return {}; }
 
 protected:
   Curve(std::vector<double> knots, bool closed);

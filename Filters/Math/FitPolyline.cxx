@@ -100,6 +100,45 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
+ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference) const
+{
+  return auditCurve(curve, reference, discreteShape(reference, this->Options.Tolerances),
+    this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise);
+}
+
+std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyline& reference,
+  const std::function<std::unique_ptr<Curve>()>& build,
+  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds,
+  ShapeAudit* lastAudit)
+{
+  const FitOptions& options = context.Options;
+  const DiscreteShape shape = discreteShape(reference, options.Tolerances);
+  std::unique_ptr<Curve> curve = build();
+  ShapeAudit audit;
+  for (int round = 0;; ++round)
+  {
+    audit = auditCurve(*curve, reference, shape, options.Tolerances, options.AuditSubdivisions,
+      context.CoordinateNoise);
+    if (audit.preserving() || round >= maxRounds)
+    {
+      break;
+    }
+    std::vector<char> failing(audit.SpanMask.size());
+    std::transform(audit.SpanMask.begin(), audit.SpanMask.end(), failing.begin(),
+      [](unsigned mask) { return mask != 0 ? 1 : 0; });
+    if (!tighten(failing))
+    {
+      break;
+    }
+    curve = build();
+  }
+  if (lastAudit)
+  {
+    *lastAudit = std::move(audit);
+  }
+  return curve;
+}
+
 SampledCurve sampleFit(const FittedPolyline& fit)
 {
   SampledCurve sampled;
@@ -107,12 +146,12 @@ SampledCurve sampleFit(const FittedPolyline& fit)
   samples = sampleCurve(*fit.Spline, fit.Plan);
   sampled.Frames =
     frenetFrames(samples.Values, flatCurvature(*fit.Spline, samples, fit.Data, fit.CoordinateNoise));
-  // Back to data units. The knot samples are the data points, exactly.
+  // Back to data units. The knot samples of an interpolation are the data points, exactly.
   for (int k = 0; k < samples.size(); ++k)
   {
     const int span = samples.Span[k];
-    const bool atKnot = samples.SpanFraction[k] == 0.0 ||
-      (!fit.Data.Closed && k == samples.size() - 1);
+    const bool atKnot = fit.interpolates() &&
+      (samples.SpanFraction[k] == 0.0 || (!fit.Data.Closed && k == samples.size() - 1));
     const int knot = samples.SpanFraction[k] == 0.0 ? span : span + 1;
     samples.Values[k][0] =
       atKnot ? fit.KnotPoints[knot] : Vec3(fit.Origin + fit.Scale * samples.Values[k][0]);
@@ -177,18 +216,23 @@ FittedPolyline fitPolyline(
       i = 0;
     }
   }
+  BuiltCurve built;
   if (fit.Data.Points.size() == 2)
   {
-    fit.Spline = std::make_unique<CubicSpline>(
+    built.Spline = std::make_unique<CubicSpline>(
       CubicSpline::interpolate(fit.Data.Points, fit.Knots, false, CubicEndCondition::Natural));
   }
   else
   {
-    fit.Spline = build(fit.Data, fit.Knots);
+    built = build(FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise });
   }
-  fit.Shape = discreteShape(fit.Data, options.Tolerances);
-  fit.Audit = auditCurve(*fit.Spline, fit.Data, fit.Shape, options.Tolerances,
-    options.AuditSubdivisions, fit.CoordinateNoise);
+  fit.Spline = std::move(built.Spline);
+  fit.ShapeReference = std::move(built.ShapeReference);
+  const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
+  fit.Shape = discreteShape(reference, options.Tolerances);
+  fit.Audit = built.Audit ? *std::move(built.Audit)
+                          : auditCurve(*fit.Spline, reference, fit.Shape, options.Tolerances,
+                              options.AuditSubdivisions, fit.CoordinateNoise);
   SamplingOptions sampling = options.Sampling;
   sampling.TargetLength /= fit.Scale; // the curve is normalised; the option is in data units
   fit.Plan = planSamples(*fit.Spline, sampling);

@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace shapesplines
@@ -28,9 +29,50 @@ struct FitOptions
   double CoordinatePrecision = 2.220446049250313e-16;
 };
 
-/// Builds a family's curve through the cleaned data (at least three points).
-using CurveBuilder =
-  std::function<std::unique_ptr<Curve>(const CleanPolyline& data, const std::vector<double>& knots)>;
+/**
+ * What a family's builder gets: the cleaned data in the normalised frame (at
+ * least three points), its knots (one per point, plus the closing knot of a
+ * closed line), the options and the rounding of the coordinates.
+ */
+struct FitContext
+{
+  const CleanPolyline& Data;
+  const std::vector<double>& Knots;
+  const FitOptions& Options;
+  double CoordinateNoise = 0.0;
+
+  /// The audit of a curve against the Definition 1 shape of reference, a
+  /// polygon with one vertex per knot of the curve: the data for an
+  /// interpolation, the least-squares polygon for an approximation.
+  ShapeAudit audit(const Curve& curve, const CleanPolyline& reference) const;
+};
+
+/// A family's curve and, for an approximation, the polygon whose shape it keeps.
+struct BuiltCurve
+{
+  std::unique_ptr<Curve> Spline;
+  /// Approximations only: the polygon (normalised frame, one vertex per knot
+  /// of Spline) whose discrete shape the curve keeps, e.g. L* of paper 000 or
+  /// psi of paper 001. Empty for an interpolation: its reference is the data.
+  std::optional<CleanPolyline> ShapeReference;
+  /// The audit of Spline against its reference, when the builder has made it.
+  std::optional<ShapeAudit> Audit;
+};
+
+using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;
+
+/**
+ * Automatic shape preservation, written once for every family: build() a
+ * curve and audit it against reference; while some span fails
+ * (failing[j] != 0), tighten(failing) raises the family's tension or degree
+ * on or next to the failing spans, or returns false when it cannot any more
+ * (its cap is reached), and the curve is rebuilt. At most maxRounds rounds.
+ * Returns the last curve built; its audit goes to lastAudit if given.
+ */
+std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyline& reference,
+  const std::function<std::unique_ptr<Curve>()>& build,
+  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds = 64,
+  ShapeAudit* lastAudit = nullptr);
 
 /**
  * A family's curve through one polyline, audited, with its sampling planned
@@ -52,9 +94,14 @@ struct FittedPolyline
   double CoordinateNoise = 0.0; ///< rounding of the input coordinates, normalised
   std::vector<double> Knots;    ///< normalised parameter
   std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
-  DiscreteShape Shape;
-  ShapeAudit Audit;
+  /// Approximations: the polygon whose shape the curve keeps (see BuiltCurve).
+  std::optional<CleanPolyline> ShapeReference;
+  DiscreteShape Shape; ///< of the reference: the data, or ShapeReference
+  ShapeAudit Audit;    ///< against that shape
   SamplingPlan Plan;
+
+  /// Whether the curve passes through the data at its knots.
+  bool interpolates() const { return !this->ShapeReference; }
 };
 
 /// A fitted curve's samples and their Frenet frames, in data units (positions,
@@ -94,7 +141,8 @@ FittedPolyline fitPolyline(
 
 /**
  * Samples a fitted curve as planned, with Frenet frames, curvature and torsion
- * from its exact derivatives; the knot samples are the data points, exactly.
+ * from its exact derivatives; the knot samples of an interpolation are the
+ * data points, exactly.
  * Written once for every family. The fit must have a Spline.
  */
 SampledCurve sampleFit(const FittedPolyline& fit);

@@ -46,9 +46,11 @@ inline std::vector<Vec3> akima()
 
 inline CurveBuilder cubicBuilder(CubicEndCondition ends = CubicEndCondition::NotAKnot)
 {
-  return [ends](const CleanPolyline& data, const std::vector<double>& knots) {
-    return std::unique_ptr<Curve>(
-      new CubicSpline(CubicSpline::interpolate(data.Points, knots, data.Closed, ends)));
+  return [ends](const FitContext& context) {
+    BuiltCurve built;
+    built.Spline = std::make_unique<CubicSpline>(
+      CubicSpline::interpolate(context.Data.Points, context.Knots, context.Data.Closed, ends));
+    return built;
   };
 }
 

@@ -366,10 +366,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   checkCleaning(points, options);
 
   const ss::CubicEndCondition ends = input.Ends;
-  const ss::CurveBuilder build = [ends](const ss::CleanPolyline& line,
-                                   const std::vector<double>& knots) {
-    return std::unique_ptr<ss::Curve>(
-      new ss::CubicSpline(ss::CubicSpline::interpolate(line.Points, knots, line.Closed, ends)));
+  const ss::CurveBuilder build = [ends](const ss::FitContext& context) {
+    ss::BuiltCurve built;
+    built.Spline = std::make_unique<ss::CubicSpline>(ss::CubicSpline::interpolate(
+      context.Data.Points, context.Knots, context.Data.Closed, ends));
+    return built;
   };
 
   ss::FittedPolyline fit;
