@@ -3,6 +3,7 @@
 // pipelines. Inputs are built in code unless a file of SHAPESPLINES_DATA_DIR
 // is named.
 #include "vtkCubicSplineFilter.h"
+#include "vtkCurvatureCombFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
 
 #include "vtkCallbackCommand.h"
@@ -1503,3 +1504,102 @@ TEST(Parallel, SameOutputWithThreadsAndSequential)
   EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
 }
 } // namespace
+
+// ===========================================================================
+// Curvature and torsion combs.
+
+/// Runs a comb filter on a curve made by the cubic spline filter.
+FilterRun RunComb(vtkPolyData* curve, const std::function<void(vtkCurvatureCombFilter*)>& setup)
+{
+  vtkNew<vtkCurvatureCombFilter> comb;
+  setup(comb);
+  comb->SetInputData(curve);
+  return UpdateChecked(curve, comb, { comb });
+}
+
+TEST(CurvatureComb, CircleTeethPointOutwardWithLengthScaleOverRadius)
+{
+  const FilterRun curve = RunCubic(ClosedCircleData());
+  const FilterRun run = RunComb(curve.Output, [](vtkCurvatureCombFilter*) {});
+  ExpectNoMessages(run);
+  vtkPolyData* comb = run.Output;
+  const auto cells = LinesOf(comb);
+  const vtkIdType samples = curve.Output->GetNumberOfPoints();
+  ASSERT_EQ(static_cast<vtkIdType>(cells.size()), samples + 1); // teeth, then one envelope
+  // Automatic scale: the longest tooth is 0.15 of the curve's bounding-box diagonal.
+  const double diagonal = curve.Output->GetLength();
+  const double scale = comb->GetFieldData()->GetArray("CombScale")->GetTuple1(0);
+  vtkDataArray* normal = PointArray(curve.Output, "Normal");
+  vtkDataArray* curvature = PointArray(curve.Output, "Curvature");
+  double longest = 0.0;
+  for (vtkIdType t = 0; t < samples; ++t)
+  {
+    ASSERT_EQ(cells[t].size(), 2u);
+    const Point base = PointOf(comb, cells[t][0]);
+    const Point tip = PointOf(comb, cells[t][1]);
+    EXPECT_LT(Norm(base - PointOf(curve.Output, t)), 1e-15 * diagonal);
+    // Along -Normal, scaled by the curvature: away from the centre of curvature.
+    const Point expected = base - scale * curvature->GetTuple1(t) * Vector(normal, t);
+    EXPECT_LT(Norm(tip - expected), 1e-12 * diagonal) << t;
+    const double length = Norm(tip - base);
+    longest = std::max(longest, length);
+    EXPECT_GT(Dot(tip - base, base - CircleCenter), 0.999 * length * Norm(base - CircleCenter));
+    // The cubic through 16 points of a circle has a curvature within 3% of 1/r.
+    EXPECT_NEAR(length, 0.15 * diagonal, 0.15 * diagonal * 0.03);
+  }
+  EXPECT_NEAR(longest, 0.15 * diagonal, 1e-12 * diagonal);
+  // The envelope is closed and joins the tips in order.
+  const IdList& envelope = cells.back();
+  ASSERT_EQ(static_cast<vtkIdType>(envelope.size()), samples + 1);
+  EXPECT_EQ(envelope.front(), envelope.back());
+  EXPECT_EQ(envelope[1], cells[1][1]);
+  EXPECT_EQ(CellArray(comb, "CombPart")->GetTuple1(samples), 1.0);
+}
+
+TEST(CurvatureComb, HelixTorsionCombAlongBinormalWithFixedScale)
+{
+  const FilterRun curve = RunCubic(ReadData("helix.vtp"));
+  const FilterRun run = RunComb(curve.Output, [](vtkCurvatureCombFilter* comb) {
+    comb->SetCombTypeToTorsion();
+    comb->SetScaleModeToFixed();
+    comb->SetScaleFactor(2.0);
+    comb->SetStride(3);
+    comb->EnvelopeOff();
+  });
+  ExpectNoMessages(run);
+  vtkPolyData* comb = run.Output;
+  const auto cells = LinesOf(comb);
+  const vtkIdType samples = curve.Output->GetNumberOfPoints();
+  // Every third sample, and the last one.
+  const vtkIdType teeth = (samples - 1) / 3 + 1 + ((samples - 1) % 3 != 0 ? 1 : 0);
+  ASSERT_EQ(static_cast<vtkIdType>(cells.size()), teeth);
+  vtkDataArray* binormal = PointArray(curve.Output, "Binormal");
+  vtkDataArray* torsion = PointArray(curve.Output, "Torsion");
+  for (vtkIdType t = 0; t < teeth; ++t)
+  {
+    const vtkIdType sample = std::min<vtkIdType>(3 * t, samples - 1);
+    const Point expected =
+      PointOf(curve.Output, sample) + 2.0 * torsion->GetTuple1(sample) * Vector(binormal, sample);
+    EXPECT_LT(Norm(PointOf(comb, cells[t][1]) - expected), 1e-12) << t;
+  }
+  EXPECT_EQ(comb->GetFieldData()->GetArray("CombScale")->GetTuple1(0), 2.0);
+}
+
+TEST(CurvatureComb, MissingArraysAreAnErrorAndTheCombIsEmpty)
+{
+  const auto data = PolylinesData({ Circle(1.0, 8) });
+  const FilterRun run = RunComb(data, [](vtkCurvatureCombFilter*) {});
+  EXPECT_EQ(CountMessages(run.Errors, { "Curvature", "Normal" }), 1) << Joined(run.Errors);
+  EXPECT_EQ(run.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(CurvatureComb, NonFiniteValuesGiveZeroTeethWithAWarning)
+{
+  const FilterRun curve = RunCubic(ReadData("helix.vtp"));
+  const auto damaged = DeepCopy(curve.Output);
+  vtkDataArray::SafeDownCast(PointArray(damaged, "Curvature"))->SetTuple1(4, NaN);
+  vtkDataArray::SafeDownCast(PointArray(damaged, "Normal"))->SetTuple3(5, Inf, 0, 0);
+  const FilterRun run = RunComb(damaged, [](vtkCurvatureCombFilter*) {});
+  EXPECT_EQ(CountMessages(run.Warnings, { "2 teeth", "zero length" }), 1) << Joined(run.Warnings);
+  ExpectAllFinite(run.Output);
+}

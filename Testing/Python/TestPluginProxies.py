@@ -41,7 +41,7 @@ args = parser.parse_args()
 if not os.path.isfile(args.plugin):
     raise SystemExit("plugin not found: %s" % args.plugin)
 LoadPlugin(args.plugin, remote=False, ns=globals())
-for proxy_name in ("CubicSpline", "PolylineShapeAnalysis"):
+for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb"):
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
@@ -285,7 +285,8 @@ def check_curve(label, out, inp, expected_points=None, subdivisions=None):
 # =========================================================================== documentation
 print("== documentation of every property")
 helix = reader("helix.vtp")
-for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix)):
+for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
+              CurvatureComb(Input=CubicSpline(Input=helix))):
     name = proxy.GetXMLName()
     doc = proxy.SMProxy.GetDocumentation()
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
@@ -303,7 +304,9 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix)):
                                 "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames",
                                 "EndCondition"],
                 "PolylineShapeAnalysis": ["Input", "Curve", "Closed", "DataShapeTolerance",
-                                          "CurveShapeTolerance"]}[name]
+                                          "CurveShapeTolerance"],
+                "CurvatureComb": ["Input", "CombType", "ScaleMode", "RelativeToothLength", "ScaleFactor",
+                                  "Stride", "Envelope"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
@@ -695,6 +698,27 @@ check(cell_array(out, "ShapeViolations")[0] == -1 and cell_array(out, "ShapePres
       and not np.any(point_array(out, "ViolationMask")),
       "Closed=0 with a closed curve: warned and not audited",
       "ShapeViolations 0, empty ViolationMask, ShapePreserving %d" % cell_array(out, "ShapePreserving")[0])
+
+# =========================================================================== CurvatureComb
+print("== CurvatureComb on the Akima cubic")
+curve = LOG.watch(CubicSpline(Input=akima_src, NumberOfSubdivisions=8))
+comb = LOG.watch(CurvatureComb(Input=curve, Stride=2))
+out = run(comb, "CurvatureComb(akima cubic, Stride=2)")
+curve_out = fetch(curve)
+samples = curve_out.GetNumberOfPoints()
+teeth = (samples - 1) // 2 + 1 + (1 if (samples - 1) % 2 else 0)
+cells = lines_of(out)
+base = points_of(out)
+lengths = [np.linalg.norm(base[c[1]] - base[c[0]]) for c in cells[:teeth]]
+diagonal = curve_out.GetLength()
+check(len(cells) == teeth + 1 and len(cells[-1]) == teeth and abs(max(lengths) - 0.15 * diagonal) < 1e-9 * diagonal,
+      "CurvatureComb: a tooth per second sample and the last, one envelope, longest tooth 0.15 diagonal",
+      "%d cells for %d samples, longest tooth %s of the diagonal" % (len(cells), samples, fmt(max(lengths) / diagonal)))
+comb.CombType = "Torsion"
+out = run(comb, "CurvatureComb(akima cubic, Torsion)")
+# A planar curve has zero torsion: the torsion comb has zero-length teeth.
+check(np.allclose(points_of(out)[0::2][:teeth], points_of(out)[1::2][:teeth], atol=1e-12 * diagonal),
+      "CurvatureComb(Torsion) of a planar curve has zero-length teeth")
 
 # =========================================================================== summary
 elapsed = time.time() - START
