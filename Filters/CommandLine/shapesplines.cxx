@@ -1,0 +1,815 @@
+// shapesplines: the ShapeSplines filters from the command line.
+//   shapesplines fit INPUT -o OUTPUT [options]   fit spline curves to polylines
+//   shapesplines audit INPUT [CURVE] [options]   discrete shape, and a curve's audit
+// Reads .vtp, legacy .vtk and .csv; writes .vtp or .csv. Run with --help.
+#include "vtkCubicSplineFilter.h"
+#include "vtkPolylineShapeAnalysis.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkOutputWindow.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkSmartPointer.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+const char* const Usage = R"(shapesplines: shape-preserving spline curves with curvature and torsion
+
+Usage:
+  shapesplines fit INPUT -o OUTPUT [options]
+  shapesplines audit INPUT [CURVE] [-o OUTPUT] [--closed]
+  shapesplines --help
+
+fit: one spline curve per polyline of INPUT, sampled with its exact Frenet frame,
+curvature and signed torsion, audited against the shape of the data (paper 001,
+Definition 1). Prints a summary per line.
+audit: the discrete shape of INPUT's polylines (curvature, torsion, collinear and
+coplanar runs) and, given a CURVE fitted to them by `fit`, where it breaks that
+shape.
+
+Files: INPUT and CURVE are .vtp, legacy .vtk or .csv; OUTPUT is .vtp or .csv.
+CSV input: columns x,y,z and an optional fourth column line_id; consecutive
+rows with the same line_id form a polyline, without it the whole file is one
+polyline; # starts a comment. An optional header row names the columns x, y, z,
+line_id and any others, which become point arrays (name_0, name_1, ... are
+the components of one array): a CSV written by fit reads back whole.
+CSV output: a row per sample, line_id then x,y,z then every point array.
+OUTPUT is never INPUT.
+
+Options of fit:
+  --family NAME          spline family (default cubic):
+                           cubic   classical C2 cubic spline (the baseline)
+  --end-condition NAME   cubic: not-a-knot (default), natural or clamped
+  --parameterization P   chord (default), centripetal or uniform knots
+  --closed               close every line of 3 or more distinct points
+  --samples N            N samples per span between data points (default 10)
+  --arc-length L         samples about L apart along the curve instead
+  --vmtk-names           also write the frame as FrenetTangent/Normal/Binormal
+  --data-tolerance E     shape tolerance epsilon_1 on the data (default 1e-6)
+  --curve-tolerance E    shape tolerance epsilon_2 on the curve (default 1e-3)
+Common options:
+  -o, --output OUTPUT    output file (required for fit)
+  -q, --quiet            no summary and no progress bar
+  -h, --help             this text
+
+Exit status: 0 on success, 1 on bad usage or unreadable input, 2 when the
+filter reported errors (lines skipped: see the messages).
+)";
+
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+
+std::string Extension(const std::string& path)
+{
+  return Lower(std::filesystem::path(path).extension().string());
+}
+
+/// Command-line arguments: positionals, and options with or without a value.
+struct Arguments
+{
+  std::vector<std::string> Positional;
+  std::map<std::string, std::string> Options;
+  std::set<std::string> Used;
+
+  bool Flag(const std::string& name)
+  {
+    this->Used.insert(name);
+    return this->Options.count(name) > 0;
+  }
+
+  std::string Value(const std::string& name, const std::string& fallback)
+  {
+    this->Used.insert(name);
+    const auto it = this->Options.find(name);
+    return it == this->Options.end() ? fallback : it->second;
+  }
+
+  double Number(const std::string& name, double fallback, double lo, double hi)
+  {
+    const std::string text = this->Value(name, "");
+    if (text.empty())
+    {
+      return fallback;
+    }
+    size_t end = 0;
+    double value = std::numeric_limits<double>::quiet_NaN();
+    try
+    {
+      value = std::stod(text, &end);
+    }
+    catch (const std::exception&)
+    {
+    }
+    if (end != text.size() || !(value >= lo && value <= hi))
+    {
+      std::ostringstream message;
+      message << "--" << name << " must be a number in [" << lo << ", " << hi << "], not '" << text
+              << "'";
+      throw UsageError(message.str());
+    }
+    return value;
+  }
+
+  /// Options nobody asked for are mistakes, not silently ignored.
+  void RejectUnused() const
+  {
+    for (const auto& option : this->Options)
+    {
+      if (!this->Used.count(option.first))
+      {
+        throw UsageError("unknown option --" + option.first + " for this command or family");
+      }
+    }
+  }
+};
+
+const std::set<std::string> ValueOptions = { "output", "family", "end-condition",
+  "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "quiet", "help" };
+
+Arguments Parse(int argc, char* argv[])
+{
+  Arguments args;
+  for (int i = 2; i < argc; ++i)
+  {
+    std::string word = argv[i];
+    if (word == "-o")
+    {
+      word = "--output";
+    }
+    else if (word == "-q")
+    {
+      word = "--quiet";
+    }
+    if (word.rfind("--", 0) != 0 || word.size() == 2)
+    {
+      args.Positional.push_back(word);
+      continue;
+    }
+    std::string name = word.substr(2);
+    std::string value;
+    const size_t equals = name.find('=');
+    if (equals != std::string::npos)
+    {
+      value = name.substr(equals + 1);
+      name = name.substr(0, equals);
+    }
+    if (!ValueOptions.count(name) && !FlagOptions.count(name))
+    {
+      throw UsageError("unknown option --" + name);
+    }
+    if (equals == std::string::npos && ValueOptions.count(name))
+    {
+      if (i + 1 >= argc)
+      {
+        throw UsageError("--" + name + " needs a value");
+      }
+      value = argv[++i];
+    }
+    args.Options[name] = value;
+  }
+  return args;
+}
+
+// --------------------------------------------------------------------------- files
+
+/// Splits a CSV row on commas (and surrounding blanks).
+std::vector<std::string> Fields(const std::string& row)
+{
+  std::vector<std::string> fields;
+  std::stringstream stream(row);
+  std::string field;
+  while (std::getline(stream, field, ','))
+  {
+    const size_t first = field.find_first_not_of(" \t\r");
+    const size_t last = field.find_last_not_of(" \t\r");
+    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+  }
+  return fields;
+}
+
+bool ParseNumber(const std::string& text, double& value)
+{
+  size_t end = 0;
+  try
+  {
+    value = std::stod(text, &end);
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
+  return end == text.size();
+}
+
+/// The columns of a CSV header: x, y, z, line_id, and point arrays (name or name_0, name_1, ...).
+struct CsvColumns
+{
+  std::array<int, 4> Position = { 0, 1, 2, 3 }; ///< x, y, z, line_id; -1 if absent
+  std::vector<std::pair<vtkSmartPointer<vtkDoubleArray>, int>> Arrays; ///< and first column
+};
+
+CsvColumns HeaderColumns(const std::vector<std::string>& fields)
+{
+  CsvColumns columns;
+  columns.Position = { -1, -1, -1, -1 };
+  const std::vector<std::string> names = { "x", "y", "z", "line_id" };
+  for (size_t f = 0; f < fields.size(); ++f)
+  {
+    const auto name = std::find(names.begin(), names.end(), Lower(fields[f]));
+    if (name != names.end())
+    {
+      columns.Position[name - names.begin()] = static_cast<int>(f);
+      continue;
+    }
+    // name_0, name_1, ... are the components of one array.
+    const size_t underscore = fields[f].rfind('_');
+    const std::string base = underscore == std::string::npos ? "" : fields[f].substr(0, underscore);
+    const std::string component =
+      underscore == std::string::npos ? "" : fields[f].substr(underscore + 1);
+    if (!columns.Arrays.empty() && !base.empty() &&
+      base == columns.Arrays.back().first->GetName() &&
+      component == std::to_string(columns.Arrays.back().first->GetNumberOfComponents()))
+    {
+      auto& array = columns.Arrays.back().first;
+      array->SetNumberOfComponents(array->GetNumberOfComponents() + 1);
+      continue;
+    }
+    auto array = vtkSmartPointer<vtkDoubleArray>::New();
+    array->SetName(component == "0" ? base.c_str() : fields[f].c_str());
+    columns.Arrays.emplace_back(array, static_cast<int>(f));
+  }
+  return columns;
+}
+
+vtkSmartPointer<vtkPolyData> ReadCsv(const std::string& path)
+{
+  std::ifstream file(path);
+  if (!file)
+  {
+    throw std::runtime_error("cannot open " + path);
+  }
+  CsvColumns columns;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  std::vector<vtkIdType> current;
+  double currentLine = std::numeric_limits<double>::quiet_NaN();
+  bool hasLineIds = false;
+  bool first = true;
+  std::string row;
+  std::vector<double> tuple;
+  for (int number = 1; std::getline(file, row); ++number)
+  {
+    const std::string content = row.substr(0, row.find('#'));
+    if (content.find_first_not_of(" \t\r") == std::string::npos)
+    {
+      continue;
+    }
+    const std::vector<std::string> fields = Fields(content);
+    const std::string where = path + ":" + std::to_string(number) + ": ";
+    double value;
+    if (first && !ParseNumber(fields[0], value))
+    {
+      columns = HeaderColumns(fields);
+      if (columns.Position[0] < 0 || columns.Position[1] < 0 || columns.Position[2] < 0)
+      {
+        throw std::runtime_error(where + "the header must name the columns x, y and z");
+      }
+      hasLineIds = columns.Position[3] >= 0;
+      first = false;
+      continue;
+    }
+    if (first)
+    {
+      hasLineIds = fields.size() >= 4;
+      first = false;
+    }
+    double xyzl[4] = { 0, 0, 0, 0 };
+    for (int c = 0; c < (hasLineIds ? 4 : 3); ++c)
+    {
+      const int column = columns.Position[c];
+      if (column >= static_cast<int>(fields.size()) || !ParseNumber(fields[column], xyzl[c]))
+      {
+        throw std::runtime_error(where + "expected numbers x,y,z" +
+          (hasLineIds ? ",line_id" : "") + ", got '" + content + "'");
+      }
+    }
+    for (auto& [array, column] : columns.Arrays)
+    {
+      tuple.resize(array->GetNumberOfComponents());
+      for (size_t c = 0; c < tuple.size(); ++c)
+      {
+        const size_t at = column + c;
+        if (at >= fields.size() || !ParseNumber(fields[at], tuple[c]))
+        {
+          throw std::runtime_error(where + "expected a number in column " +
+            std::to_string(at + 1) + " (" + array->GetName() + "), got '" + content + "'");
+        }
+      }
+      array->InsertNextTuple(tuple.data());
+    }
+    if (!current.empty() && hasLineIds && xyzl[3] != currentLine)
+    {
+      lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
+      current.clear();
+    }
+    currentLine = xyzl[3];
+    current.push_back(points->InsertNextPoint(xyzl));
+  }
+  if (!current.empty())
+  {
+    lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  data->SetLines(lines);
+  for (const auto& column : columns.Arrays)
+  {
+    data->GetPointData()->AddArray(column.first);
+  }
+  return data;
+}
+
+vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+{
+  if (!std::filesystem::is_regular_file(path))
+  {
+    throw std::runtime_error("no such file: " + path);
+  }
+  const std::string extension = Extension(path);
+  if (extension == ".csv")
+  {
+    return ReadCsv(path);
+  }
+  vtkSmartPointer<vtkPolyData> data;
+  if (extension == ".vtp")
+  {
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  else if (extension == ".vtk")
+  {
+    vtkNew<vtkPolyDataReader> reader;
+    reader->SetFileName(path.c_str());
+    if (!reader->IsFilePolyData())
+    {
+      throw std::runtime_error(path + " is not a legacy VTK poly data file");
+    }
+    reader->Update();
+    data = reader->GetOutput();
+  }
+  else
+  {
+    throw std::runtime_error("cannot read '" + extension + "' files (" + path +
+      "): use .vtp, .vtk or .csv");
+  }
+  if (!data || data->GetNumberOfPoints() == 0)
+  {
+    throw std::runtime_error("no points read from " + path);
+  }
+  return data;
+}
+
+void WriteCsv(vtkPolyData* data, const std::string& path)
+{
+  std::ofstream file(path);
+  if (!file)
+  {
+    throw std::runtime_error("cannot write " + path);
+  }
+  file.precision(17);
+  std::vector<vtkDataArray*> arrays;
+  file << "line_id,x,y,z";
+  vtkPointData* pd = data->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || !array->GetName())
+    {
+      continue;
+    }
+    arrays.push_back(array);
+    const int components = array->GetNumberOfComponents();
+    for (int c = 0; c < components; ++c)
+    {
+      file << ',' << array->GetName() << (components > 1 ? "_" + std::to_string(c) : "");
+    }
+  }
+  file << '\n';
+  auto it = vtk::TakeSmartPointer(data->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    // A closed line's cell repeats its first sample; a CSV row per sample is enough.
+    if (n > 2 && ids[0] == ids[n - 1])
+    {
+      --n;
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      double p[3];
+      data->GetPoint(ids[k], p);
+      file << line << ',' << p[0] << ',' << p[1] << ',' << p[2];
+      for (vtkDataArray* array : arrays)
+      {
+        for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+        {
+          file << ',' << array->GetComponent(ids[k], c);
+        }
+      }
+      file << '\n';
+    }
+  }
+  if (!file)
+  {
+    throw std::runtime_error("error while writing " + path);
+  }
+}
+
+void Write(vtkPolyData* data, const std::string& path)
+{
+  const std::string extension = Extension(path);
+  if (extension == ".csv")
+  {
+    WriteCsv(data, path);
+    return;
+  }
+  if (extension != ".vtp")
+  {
+    throw UsageError("cannot write '" + extension + "' files (" + path + "): use .vtp or .csv");
+  }
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(data);
+  writer->SetDataModeToBinary();
+  if (writer->Write() != 1)
+  {
+    throw std::runtime_error("cannot write " + path);
+  }
+}
+
+/// The output must not be one of the inputs.
+void CheckNotAnInput(const std::string& output, const std::vector<std::string>& inputs)
+{
+  for (const std::string& input : inputs)
+  {
+    std::error_code error;
+    if (output == input || std::filesystem::equivalent(output, input, error))
+    {
+      throw UsageError("the output " + output + " is an input file: refusing to overwrite it");
+    }
+  }
+}
+
+// --------------------------------------------------------------------------- messages
+
+/// VTK's errors and warnings from the filters, counted, printed on stderr.
+struct MessageCounter
+{
+  explicit MessageCounter(std::initializer_list<vtkObject*> objects)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long event, void* self, void* text) {
+      auto* counter = static_cast<MessageCounter*>(self);
+      const bool error = event == vtkCommand::ErrorEvent;
+      (error ? counter->Errors : counter->Warnings)++;
+      // VTK's text reads "Warning: In file, line N\nclass (address): message\n\n".
+      std::string message = static_cast<const char*>(text);
+      const size_t origin = message.find("): ");
+      if (origin != std::string::npos)
+      {
+        message = message.substr(origin + 3);
+      }
+      message.erase(message.find_last_not_of("\n") + 1);
+      std::cerr << (error ? "error: " : "warning: ") << message << '\n';
+    });
+    for (vtkObject* object : objects)
+    {
+      object->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+      object->AddObserver(vtkCommand::WarningEvent, this->Callback);
+    }
+  }
+
+  vtkNew<vtkCallbackCommand> Callback;
+  int Errors = 0;
+  int Warnings = 0;
+};
+
+/// A progress bar on stderr when it is a terminal.
+void ShowProgress(vtkAlgorithm* algorithm)
+{
+  if (!isatty(STDERR_FILENO))
+  {
+    return;
+  }
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetCallback([](vtkObject*, unsigned long, void*, void* amount) {
+    const double done = *static_cast<double*>(amount);
+    const int width = 40;
+    const int filled = static_cast<int>(done * width);
+    std::cerr << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] "
+              << static_cast<int>(100 * done) << "%" << (done >= 1.0 ? "\n" : "") << std::flush;
+  });
+  algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
+}
+
+double CellValue(vtkPolyData* data, const char* name, vtkIdType cell)
+{
+  vtkDataArray* array = data->GetCellData()->GetArray(name);
+  return array ? array->GetComponent(cell, 0) : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// One line per output line: samples, length, curvature and torsion ranges, violations.
+void Summarize(vtkPolyData* curve)
+{
+  vtkDataArray* curvature = curve->GetPointData()->GetArray("Curvature");
+  vtkDataArray* torsion = curve->GetPointData()->GetArray("Torsion");
+  auto it = vtk::TakeSmartPointer(curve->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    double maxCurvature = 0.0;
+    double minTorsion = 0.0;
+    double maxTorsion = 0.0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
+      minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
+      maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
+    }
+    std::cout << "line " << line << ": " << n << " samples, length "
+              << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
+              << ", torsion [" << minTorsion << ", " << maxTorsion << "], shape violations "
+              << CellValue(curve, "ShapeViolations", line) << "\n";
+  }
+}
+
+// --------------------------------------------------------------------------- commands
+
+/// The spline families: each makes its configured filter from the options.
+using FamilyFactory = std::function<vtkSmartPointer<vtkShapeSplineFilter>(Arguments&)>;
+
+std::map<std::string, FamilyFactory> Families()
+{
+  return { { "cubic", [](Arguments& args) {
+              auto filter = vtkSmartPointer<vtkCubicSplineFilter>::New();
+              const std::string ends = args.Value("end-condition", "not-a-knot");
+              const std::map<std::string, int> names = { { "natural",
+                                                           vtkCubicSplineFilter::NATURAL },
+                { "not-a-knot", vtkCubicSplineFilter::NOT_A_KNOT },
+                { "clamped", vtkCubicSplineFilter::CLAMPED } };
+              if (!names.count(ends))
+              {
+                throw UsageError("--end-condition must be natural, not-a-knot or clamped");
+              }
+              filter->SetEndCondition(names.at(ends));
+              return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+            } } };
+}
+
+int Fit(Arguments& args)
+{
+  if (args.Positional.size() != 1)
+  {
+    throw UsageError("fit takes one INPUT file");
+  }
+  const std::string input = args.Positional[0];
+  const std::string output = args.Value("output", "");
+  if (output.empty())
+  {
+    throw UsageError("fit needs -o OUTPUT");
+  }
+  CheckNotAnInput(output, { input });
+  const auto families = Families();
+  const std::string familyName = args.Value("family", "cubic");
+  if (!families.count(familyName))
+  {
+    throw UsageError("unknown --family " + familyName);
+  }
+  vtkSmartPointer<vtkShapeSplineFilter> filter = families.at(familyName)(args);
+
+  const std::map<std::string, int> parameterizations = { { "uniform",
+                                                           vtkShapeSplineFilter::UNIFORM },
+    { "chord", vtkShapeSplineFilter::CHORD_LENGTH },
+    { "centripetal", vtkShapeSplineFilter::CENTRIPETAL } };
+  const std::string parameterization = args.Value("parameterization", "chord");
+  if (!parameterizations.count(parameterization))
+  {
+    throw UsageError("--parameterization must be chord, centripetal or uniform");
+  }
+  filter->SetParameterization(parameterizations.at(parameterization));
+  filter->SetClosed(args.Flag("closed"));
+  filter->SetVMTKArrayNames(args.Flag("vmtk-names"));
+  filter->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
+  filter->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  const bool byLength = !args.Value("arc-length", "").empty();
+  if (byLength && !args.Value("samples", "").empty())
+  {
+    throw UsageError("give --samples or --arc-length, not both");
+  }
+  if (byLength)
+  {
+    filter->SetSamplingModeToArcLength();
+    filter->SetSampleLength(args.Number("arc-length", 1.0, 1e-300, 1e300));
+    if (!(filter->GetSampleLength() > 0.0))
+    {
+      throw UsageError("--arc-length must be positive");
+    }
+  }
+  else
+  {
+    filter->SetNumberOfSubdivisions(static_cast<int>(args.Number("samples", 10, 1, 100000)));
+  }
+  const bool quiet = args.Flag("quiet");
+  args.RejectUnused();
+
+  vtkSmartPointer<vtkPolyData> data = Read(input);
+  if (data->GetNumberOfLines() == 0)
+  {
+    throw std::runtime_error(input + " has no lines (polyline cells) to fit");
+  }
+  MessageCounter messages({ filter });
+  if (!quiet)
+  {
+    ShowProgress(filter);
+  }
+  filter->SetInputData(data);
+  filter->Update();
+  vtkPolyData* curve = filter->GetOutput();
+  Write(curve, output);
+  if (!quiet)
+  {
+    Summarize(curve);
+    std::cout << "wrote " << output << " (" << curve->GetNumberOfLines() << " lines, "
+              << curve->GetNumberOfPoints() << " samples)\n";
+  }
+  return messages.Errors > 0 ? 2 : 0;
+}
+
+int Audit(Arguments& args)
+{
+  if (args.Positional.empty() || args.Positional.size() > 2)
+  {
+    throw UsageError("audit takes INPUT and optionally CURVE");
+  }
+  const std::string output = args.Value("output", "");
+  if (!output.empty())
+  {
+    CheckNotAnInput(output, args.Positional);
+  }
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  analysis->SetClosed(args.Flag("closed"));
+  analysis->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
+  analysis->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  const bool quiet = args.Flag("quiet");
+  args.RejectUnused();
+
+  analysis->SetInputData(0, Read(args.Positional[0]));
+  if (args.Positional.size() == 2)
+  {
+    analysis->SetInputData(1, Read(args.Positional[1]));
+  }
+  MessageCounter messages({ analysis });
+  analysis->Update();
+  vtkPolyData* result = analysis->GetOutput();
+  if (!quiet)
+  {
+    vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
+    vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
+    vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
+    vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
+    auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
+    vtkIdType line = 0;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+    {
+      vtkIdType n;
+      const vtkIdType* ids;
+      it->GetCurrentCell(n, ids);
+      double maxCurvature = 0.0;
+      double minTorsion = 0.0;
+      double maxTorsion = 0.0;
+      int collinearCount = 0;
+      int coplanarCount = 0;
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
+        minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
+        maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
+        collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
+        coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
+      }
+      std::cout << "line " << line << ": " << n << " points, max discrete curvature "
+                << maxCurvature << ", discrete torsion [" << minTorsion << ", " << maxTorsion
+                << "], " << collinearCount << " collinear points, " << coplanarCount
+                << " coplanar segments";
+      if (args.Positional.size() == 2)
+      {
+        std::cout << "; curve: " << CellValue(result, "ShapeViolations", line)
+                  << " shape violations (collinearity "
+                  << CellValue(result, "CollinearityViolations", line) << ", convexity "
+                  << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
+                  << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
+                  << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
+                  << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
+                  << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
+      }
+      std::cout << "\n";
+    }
+  }
+  if (!output.empty())
+  {
+    Write(result, output);
+    if (!quiet)
+    {
+      std::cout << "wrote " << output << "\n";
+    }
+  }
+  return messages.Errors > 0 ? 2 : 0;
+}
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  // Messages go through the observers above, not VTK's default window.
+  vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  const std::string command = argc > 1 ? argv[1] : "";
+  if (command == "-h" || command == "--help" || command == "help")
+  {
+    std::cout << Usage;
+    return 0;
+  }
+  try
+  {
+    Arguments args = Parse(argc, argv);
+    if (args.Flag("help"))
+    {
+      std::cout << Usage;
+      return 0;
+    }
+    if (command == "fit")
+    {
+      return Fit(args);
+    }
+    if (command == "audit")
+    {
+      return Audit(args);
+    }
+    throw UsageError(command.empty() ? "no command given" : "unknown command '" + command + "'");
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "shapesplines: " << e.what() << "\nRun 'shapesplines --help' for usage.\n";
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "shapesplines: " << e.what() << "\n";
+    return 1;
+  }
+}

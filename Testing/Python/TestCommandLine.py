@@ -1,0 +1,185 @@
+"""The shapesplines command, as a user drives it from a shell: fit and audit on
+.vtp, legacy .vtk and .csv files, the per-line summary, the documented options,
+and every error path (exit status and a clear message, input never touched).
+
+Run with Debian's python3 (NumPy): TestCommandLine.py --exe shapesplines --data Data --temp DIR
+"""
+import argparse
+import hashlib
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--exe", required=True)
+parser.add_argument("--data", required=True)
+parser.add_argument("--temp", required=True)
+args = parser.parse_args()
+os.makedirs(args.temp, exist_ok=True)
+
+failures = []
+
+
+def check(ok, what, detail=""):
+    print(("ok   " if ok else "FAIL ") + what + (": " + detail if detail else ""))
+    if not ok:
+        failures.append(what)
+
+
+def run(*words):
+    result = subprocess.run([args.exe] + [str(w) for w in words], capture_output=True, text=True,
+                            timeout=120)
+    return result.returncode, result.stdout, result.stderr
+
+
+def temp(name):
+    return os.path.join(args.temp, "cli-" + name)
+
+
+def digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def read_csv(path):
+    with open(path) as f:
+        header = f.readline().strip().split(",")
+    values = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: values[:, i] for i, name in enumerate(header)}
+
+
+def write_csv(path, lines, header=True, line_ids=True):
+    with open(path, "w") as f:
+        if header:
+            f.write("x,y,z,line_id\n" if line_ids else "x,y,z\n")
+        f.write("# a comment line\n")
+        for k, points in enumerate(lines):
+            for p in points:
+                f.write(",".join(repr(float(c)) for c in p) + ("," + str(k + 7) if line_ids else "") + "\n")
+
+
+def write_legacy_vtk(path, lines):
+    points = [p for line in lines for p in line]
+    with open(path, "w") as f:
+        f.write("# vtk DataFile Version 3.0\nlines\nASCII\nDATASET POLYDATA\n")
+        f.write("POINTS %d double\n" % len(points))
+        for p in points:
+            f.write("%r %r %r\n" % tuple(float(c) for c in p))
+        f.write("LINES %d %d\n" % (len(lines), sum(len(l) + 1 for l in lines)))
+        start = 0
+        for line in lines:
+            f.write(" ".join(str(i) for i in [len(line)] + list(range(start, start + len(line)))) + "\n")
+            start += len(line)
+
+
+def helix(per_turn, turns, a=2.0, b=1.0):
+    t = 2 * math.pi * np.arange(per_turn * turns + 1) / per_turn
+    return np.column_stack([a * np.cos(t), a * np.sin(t), b * t])
+
+
+# ---------------------------------------------------------------------------- help
+code, out, err = run("--help")
+options = ["--family", "--end-condition", "--parameterization", "--closed", "--samples", "--arc-length",
+           "--vmtk-names", "--data-tolerance", "--curve-tolerance", "--output", "--quiet", "--help"]
+missing = [o for o in options if o not in out]
+check(code == 0 and "fit INPUT" in out and "audit INPUT" in out and not missing,
+      "--help documents both commands and every option", "missing %s" % missing if missing else "")
+code2, out2, _ = run("fit", "--help")
+check(code2 == 0 and out2 == out, "fit --help prints the same help")
+
+# ---------------------------------------------------------------------------- fit: closed forms
+helix_csv = temp("helix.csv")
+write_csv(helix_csv, [helix(32, 3)], header=False, line_ids=False)
+code, out, err = run("fit", helix_csv, "-o", temp("helix-out.csv"), "--samples", 4)
+result = read_csv(temp("helix-out.csv"))
+n = len(result["x"])
+middle = slice(n // 4, 3 * n // 4)
+k_err = np.max(np.abs(result["Curvature"][middle] - 0.4)) / 0.4
+t_err = np.max(np.abs(result["Torsion"][middle] - 0.2)) / 0.2
+# The cubic's errors at 32 points per turn are 0.32% and 0.64% (second order).
+check(code == 0 and n == 96 * 4 + 1 and k_err < 5e-3 and t_err < 1e-2,
+      "fit helix.csv (32 points per turn): curvature 0.4 and torsion 0.2 in the middle",
+      "%d samples, relative errors %.1e and %.1e" % (n, k_err, t_err))
+summary = [l for l in out.splitlines() if l.startswith("line ")]
+check(len(summary) == 1 and "%d samples" % n in summary[0] and "shape violations 0" in summary[0],
+      "the summary gives each line's samples and violations", summary[0] if summary else out)
+length = float(summary[0].split("length ")[1].split(",")[0]) if summary else float("nan")
+true_length = math.sqrt(5.0) * 6 * math.pi
+check(abs(length - true_length) < 1e-4 * true_length, "the summary's length is the helix length",
+      "%.6f vs %.6f" % (length, true_length))
+check(np.allclose(result["line_id"], 0) and "Tangent_2" in result and "SpanIndex" in result,
+      "CSV output: line_id, x, y, z and every point array by component")
+
+# ---------------------------------------------------------------------------- readers agree
+lines = [helix(8, 2), np.array([[0, 0, 0], [1, 0, 0], [2, 1, 0], [3, 3, 0.5], [4, 3, 1]], float)]
+write_csv(temp("two.csv"), lines)
+write_legacy_vtk(temp("two.vtk"), lines)
+outputs = {}
+for ext in ("csv", "vtk"):
+    code, out, err = run("fit", temp("two." + ext), "-o", temp("two-%s.csv" % ext), "-q")
+    outputs[ext] = read_csv(temp("two-%s.csv" % ext))
+    check(code == 0 and out == "" and err == "", "fit two.%s -q: silent and successful" % ext, err)
+same = all(np.array_equal(outputs["csv"][k], outputs["vtk"][k]) for k in outputs["csv"])
+ids = outputs["csv"]["line_id"]
+check(same and set(ids) == {0, 1}, "CSV with line_id and legacy .vtk give the same two curves")
+
+code, out, err = run("fit", os.path.join(args.data, "aorta-centerline.vtp"), "-o", temp("aorta.vtp"),
+                     "--family", "cubic", "--end-condition", "natural", "--arc-length", "0.5",
+                     "--parameterization", "centripetal", "--vmtk-names")
+check(code == 0 and os.path.getsize(temp("aorta.vtp")) > 0 and out.count("\nline ") + out.startswith("line ") == 2,
+      "fit aorta.vtp -> .vtp with family options, arc-length sampling and VMTK names", out.strip()[-60:])
+
+# ---------------------------------------------------------------------------- audit
+code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
+rows = [l for l in out.splitlines() if l.startswith("line ")]
+check(code == 0 and len(rows) == 2 and all("shape violations" in r for r in rows),
+      "audit INPUT CURVE: discrete shape and the curve's violations per line", rows[0] if rows else err)
+code, out, err = run("audit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-shape.vtp"))
+check(code == 0 and "collinear points" in out and os.path.isfile(temp("akima-shape.vtp")),
+      "audit INPUT -o OUTPUT: the discrete shape written", out.strip())
+
+# ---------------------------------------------------------------------------- errors
+before = digest(temp("two.csv"))
+cases = [
+    (("fit", temp("two.csv"), "-o", temp("two.csv")), 1, "refusing to overwrite"),
+    (("fit", temp("nothere.csv"), "-o", temp("x.vtp")), 1, "no such file"),
+    (("fit", temp("two.csv"), "-o", temp("x.txt")), 1, "use .vtp or .csv"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--tension", "3"), 1, "unknown option --tension"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--samples", "0"), 1, "--samples must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--samples", "3", "--arc-length", "1"), 1, "not both"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "bezier"), 1, "unknown --family"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--end-condition", "free"), 1, "--end-condition must be"),
+    (("fit", temp("two.csv")), 1, "needs -o"),
+    (("fit", temp("two.csv"), "-o"), 1, "needs a value"),
+    (("audit",), 1, "audit takes INPUT"),
+    (("frobnicate",), 1, "unknown command"),
+    ((), 1, "no command"),
+]
+for words, expected, message in cases:
+    code, out, err = run(*words)
+    check(code == expected and message in err, "error: shapesplines %s" % " ".join(os.path.basename(str(w)) for w in words),
+          "exit %d, %r" % (code, err.strip().splitlines()[0] if err.strip() else ""))
+check(digest(temp("two.csv")) == before, "the input is never modified")
+
+with open(temp("bad.csv"), "w") as f:
+    f.write("0,0,0\n1,zero,0\n")
+code, out, err = run("fit", temp("bad.csv"), "-o", temp("bad.vtp"))
+check(code == 1 and "bad.csv:2:" in err, "a malformed CSV row is named by its line number", err.strip())
+
+# A NaN in one line: that line is skipped with an error naming it, the other is written.
+with open(temp("nan.csv"), "w") as f:
+    f.write("0,0,0,0\n1,nan,0,0\n2,1,0,0\n3,3,0,0\n0,0,1,1\n1,1,1,1\n2,2,3,1\n")
+code, out, err = run("fit", temp("nan.csv"), "-o", temp("nan-out.csv"))
+nan_out = read_csv(temp("nan-out.csv"))
+check(code == 2 and "cell 0" in err and "not finite" in err and len(nan_out["x"]) == 21
+      and np.all(np.isfinite(nan_out["Curvature"])),
+      "a NaN line is skipped with an error naming the cell (exit 2); the other line is written",
+      "exit %d, %r, %d rows" % (code, err.strip(), len(nan_out["x"])))
+
+if failures:
+    print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
+    sys.exit(1)
+print("\nAll command-line checks passed.")
