@@ -19,6 +19,8 @@ packages=(
   libeigen3-dev googletest libgtest-dev
   # headless rendering and the independent reference implementation in tests
   xvfb xauth python3-scipy python3-numpy
+  # mpirun for the distributed pvbatch test
+  openmpi-bin
   # the libFuzzer target of the math core (clang with its fuzzer runtime)
   clang libclang-rt-14-dev
 )
