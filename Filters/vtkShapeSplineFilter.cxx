@@ -1,6 +1,7 @@
 #include "vtkShapeSplineFilter.h"
 
 #include "FitPolyline.h"
+#include "SparseSolve.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -268,6 +269,14 @@ int vtkShapeSplineFilter::RequestData(
       vtkWarningMacro("Line (cell " << line.CellId
                                     << ") has two distinct points: output is a straight segment.");
     }
+    if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId << "): the spline's linear system is ill-conditioned"
+                                    << " (condition estimate " << fit.Spline->conditionEstimate()
+                                    << "): its curvature and torsion may be inaccurate. Very uneven"
+                                    << " point spacing causes this; try Centripetal parameterization"
+                                    << " or resample the line.");
+    }
     if (fit.Plan.LengthIncreased)
     {
       vtkWarningMacro("Line (cell " << line.CellId
@@ -413,6 +422,7 @@ int vtkShapeSplineFilter::RequestData(
   violations->SetNumberOfTuples(lineCount);
   auto length = NewArray("Length", 1, lineCount);
   auto tortuosity = NewArray("Tortuosity", 1, lineCount);
+  auto condition = NewArray("ConditionEstimate", 1, lineCount);
   for (vtkIdType c = 0; c < lineCount; ++c)
   {
     const LineWork& line = lines[kept[c]];
@@ -424,6 +434,7 @@ int vtkShapeSplineFilter::RequestData(
     const double total = line.Length;
     length->SetValue(c, total);
     tortuosity->SetValue(c, line.Chord > 0 ? total / line.Chord : 0.0);
+    condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
     const auto lineParameters =
       fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
     for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
@@ -459,7 +470,7 @@ int vtkShapeSplineFilter::RequestData(
     outPD->AddArray(Renamed(binormal.Get(), "FrenetBinormal"));
   }
   for (vtkAbstractArray* a :
-    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity })
+    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition })
   {
     outCD->AddArray(a);
   }

@@ -21,7 +21,9 @@
  * (e.g. Degree, Tension; 0 on lines too short for the family's curve), and
  * the input point arrays interpolated between the data points around each
  * sample. Output cell arrays: ShapePreserving, ShapeViolations, Length,
- * Tortuosity (length / end-to-end distance, 0 for closed lines), the
+ * Tortuosity (length / end-to-end distance, 0 for closed lines),
+ * ConditionEstimate (of the linear systems solved for the line; a warning
+ * names the lines where it is too large to trust, above 4.5e11), the
  * summary of each shape parameter (Max<Name> or Min<Name>), and the input
  * cell arrays. An approximating family audits its curve against the polygon
  * whose shape it keeps rather than against the data. With VMTKArrayNames on, the frame is also written as

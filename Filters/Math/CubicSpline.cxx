@@ -32,7 +32,8 @@ Vec3 parabolaDerivative(double t0, double t1, double t2, const Vec3& p0, const V
  * plus two end conditions. clamped is used by CubicEndCondition::Clamped only.
  */
 Eigen::MatrixX3d solveMoments(const std::vector<Vec3>& points, const std::vector<double>& h,
-  bool closed, CubicEndCondition ends, const CubicSpline::EndDerivatives& clamped)
+  bool closed, CubicEndCondition ends, const CubicSpline::EndDerivatives& clamped,
+  double& condition)
 {
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(h.size());
@@ -81,7 +82,7 @@ Eigen::MatrixX3d solveMoments(const std::vector<Vec3>& points, const std::vector
       rhs.row(last) = 6.0 * (clamped.second - slope(s)).transpose();
     }
   }
-  return solveSparse(n, a, rhs);
+  return solveSparse(n, a, rhs, &condition);
 }
 } // namespace
 
@@ -129,6 +130,7 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   auto slope = [&](int i) -> Vec3 { return (y(i + 1) - y(i)) / h[i]; };
 
   Eigen::MatrixX3d moments(n, 3);
+  double condition = 1.0;
   if (!closed && n == 3 && ends == CubicEndCondition::NotAKnot)
   {
     // One parabola: every moment is its second derivative, set exactly so that
@@ -140,10 +142,11 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   {
     const bool needEnds = ends == CubicEndCondition::Clamped && !clamped;
     const EndDerivatives d = needEnds ? parabolaEndDerivatives(points, knots) : clamped.value_or(EndDerivatives{});
-    moments = solveMoments(points, h, closed, ends, d);
+    moments = solveMoments(points, h, closed, ends, d, condition);
   }
 
   CubicSpline spline(knots, closed);
+  spline.ConditionEstimate = condition;
   spline.Coefficients.resize(spans);
   for (int i = 0; i < spans; ++i)
   {

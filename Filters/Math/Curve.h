@@ -56,11 +56,17 @@ public:
   /// The shape parameters chosen per span; none for a family without any.
   virtual std::vector<SpanParameter> spanParameters() const { return {}; }
 
+  /// Estimated condition number of the linear systems solved to build the
+  /// curve (their largest; 1 when none was solved): above
+  /// UntrustedCondition (SparseSolve.h) rounding can spoil the curve.
+  double conditionEstimate() const { return ConditionEstimate; }
+
 protected:
   Curve(std::vector<double> knots, bool closed);
 
   std::vector<double> Knots;
   bool Closed = false;
+  double ConditionEstimate = 1.0;
 };
 } // namespace shapesplines
 

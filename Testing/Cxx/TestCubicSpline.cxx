@@ -1,6 +1,7 @@
 // The classical C2 cubic spline: interpolation, continuity, end conditions,
 // polynomial reproduction and curvature/torsion accuracy on the helix.
 #include "MathTestUtilities.h"
+#include "SparseSolve.h"
 
 #include "Parameterization.h"
 
@@ -229,4 +230,63 @@ TEST(CubicSpline, NaturalEndMomentsAreExactlyZeroAtAnyScale)
       CubicSpline::interpolate(points, knots, false, CubicEndCondition::Natural);
     EXPECT_EQ(s.evaluateOnSpan(0, knots.front(), 2)[2].norm(), 0.0) << scale;
   }
+}
+
+TEST(SparseSolve, ConditionEstimateIsWithinAFactorOfThreeOfTheTrueOne)
+{
+  // Tridiagonal and cyclic systems like the splines', with one span from mild to tiny,
+  // and one badly scaled row, which the estimate must see through.
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double smallest : { 0.5, 1e-3, 1e-8 })
+  {
+    for (const bool cyclic : { false, true })
+    {
+      const int n = 40;
+      std::vector<double> h(n);
+      for (double& v : h)
+      {
+        v = 0.5 + unit(random);
+      }
+      h[n / 2] = smallest;
+      Triplets entries;
+      Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+      for (int i = 0; i < n; ++i)
+      {
+        const int prev = (i + n - 1) % n;
+        for (const auto& [column, value] : { std::pair<int, double>{ prev, h[prev] },
+               { i, 2.0 * (h[prev] + h[i]) }, { (i + 1) % n, h[i] } })
+        {
+          if (cyclic || std::abs(column - i) <= 1)
+          {
+            const double rowScale = i == 3 ? 1e-9 : 1.0;
+            entries.emplace_back(i, column, rowScale * value);
+            dense(i, column) += rowScale * value;
+          }
+        }
+      }
+      const Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Random(n, 3);
+      double estimate = 0.0;
+      const Eigen::MatrixX3d x = solveSparse(n, entries, rhs, &estimate);
+      EXPECT_LT((dense * x - rhs).norm(), 1e-12 * dense.norm() * x.norm());
+      // The condition of the rows scaled to a largest entry of 1.
+      const Eigen::VectorXd rowMax = dense.cwiseAbs().rowwise().maxCoeff();
+      const Eigen::MatrixXd scaled = rowMax.cwiseInverse().asDiagonal() * dense;
+      const double exact = scaled.cwiseAbs().colwise().sum().maxCoeff() *
+        scaled.inverse().cwiseAbs().colwise().sum().maxCoeff();
+      // A lower bound, up to the rounding of solves with the badly scaled row.
+      EXPECT_LE(estimate, exact * (1 + 1e-6)) << smallest << (cyclic ? " cyclic" : "");
+      EXPECT_GE(estimate, exact / 3.0) << smallest << (cyclic ? " cyclic" : "");
+    }
+  }
+}
+
+TEST(SparseSolve, ConditionEstimateOfAnIllConditionedSystemIsLarge)
+{
+  // [[1, 1], [1, 1 + 1e-12]]: condition about 4e12, whatever the row scaling.
+  const Triplets entries = { { 0, 0, 1.0 }, { 0, 1, 1.0 }, { 1, 0, 1.0 }, { 1, 1, 1.0 + 1e-12 } };
+  double estimate = 0.0;
+  solveSparse(2, entries, Eigen::MatrixX3d::Ones(2, 3), &estimate);
+  EXPECT_GT(estimate, UntrustedCondition);
+  EXPECT_NEAR(estimate, 4e12, 0.1e12);
 }

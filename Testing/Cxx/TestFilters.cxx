@@ -2,6 +2,8 @@
 // vtkShapeSplineFilter, and vtkPolylineShapeAnalysis), driven through VTK
 // pipelines. Inputs are built in code unless a file of SHAPESPLINES_DATA_DIR
 // is named.
+#include "FitPolyline.h"
+
 #include "vtkCubicSplineFilter.h"
 #include "vtkCurvatureCombFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
@@ -16,6 +18,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -500,7 +503,7 @@ const std::vector<std::pair<const char*, int>> CurvePointArrays = { { "Curvature
   { "Torsion", 1 }, { "Tangent", 3 }, { "Normal", 3 }, { "Binormal", 3 }, { "Parameter", 1 },
   { "ArcLength", 1 }, { "SpanIndex", 1 } };
 const std::vector<const char*> CurveCellArrays = { "ShapePreserving", "ShapeViolations", "Length",
-  "Tortuosity" };
+  "Tortuosity", "ConditionEstimate" };
 
 /// Tangent, Normal, Binormal unit, orthogonal and right-handed at ids; the
 /// worst deviation is reported once, with the sample where it occurs.
@@ -1601,5 +1604,75 @@ TEST(CurvatureComb, NonFiniteValuesGiveZeroTeethWithAWarning)
   vtkDataArray::SafeDownCast(PointArray(damaged, "Normal"))->SetTuple3(5, Inf, 0, 0);
   const FilterRun run = RunComb(damaged, [](vtkCurvatureCombFilter*) {});
   EXPECT_EQ(CountMessages(run.Warnings, { "2 teeth", "zero length" }), 1) << Joined(run.Warnings);
+  ExpectAllFinite(run.Output);
+}
+
+// ===========================================================================
+// Numerical honesty: the condition of the spline system, reported and warned about.
+
+TEST(CubicSplineFilter, UnevenSpacingKeepsTheSystemWellConditioned)
+{
+  // Spacing 1e-10 next to 1: the cubic's moment system stays diagonally
+  // dominant, so its (row-equilibrated) condition stays small and nothing warns.
+  const Polyline uneven = { { 0, 0, 0 }, { 1, 0.5, 0 }, { 1 + 1e-10, 0.5 + 1e-10, 1e-10 },
+    { 2, 0, 1 }, { 3, 1, 1 } };
+  const FilterRun run = RunCubic(PolylinesData({ uneven }));
+  EXPECT_EQ(CountMessages(run.Warnings, { "ill-conditioned" }), 0) << Joined(run.Warnings);
+  const double condition = CellArray(run.Output, "ConditionEstimate")->GetTuple1(0);
+  Measure("cubic condition estimate, spacing 1e-10 next to 1", condition);
+  EXPECT_GE(condition, 1.0);
+  EXPECT_LT(condition, 100.0);
+}
+
+/// A curve reporting the condition its builder measured (the cubic's systems never are bad).
+class ReportedCondition final : public shapesplines::Curve
+{
+public:
+  ReportedCondition(std::unique_ptr<shapesplines::Curve> curve, double condition)
+    : Curve(curve->knots(), curve->isClosed())
+    , Inner(std::move(curve))
+  {
+    this->ConditionEstimate = condition;
+  }
+  shapesplines::Derivatives evaluateOnSpan(int span, double t, int order) const override
+  {
+    return this->Inner->evaluateOnSpan(span, t, order);
+  }
+
+private:
+  std::unique_ptr<shapesplines::Curve> Inner;
+};
+
+/// The cubic filter, claiming an ill-conditioned system on every line with more than four points.
+class IllConditionedCubic : public vtkCubicSplineFilter
+{
+public:
+  static IllConditionedCubic* New() { VTK_STANDARD_NEW_BODY(IllConditionedCubic); }
+  vtkTypeMacro(IllConditionedCubic, vtkCubicSplineFilter);
+
+protected:
+  shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override
+  {
+    shapesplines::BuiltCurve built = this->Superclass::BuildCurve(context);
+    const double condition = context.Data.Points.size() > 4 ? 1e13 : 2.0;
+    built.Spline = std::make_unique<ReportedCondition>(std::move(built.Spline), condition);
+    return built;
+  }
+};
+
+TEST(ShapeSplineFilter, IllConditionedSystemIsReportedAndWarned)
+{
+  const Polyline shortLine = { { 0, 0, 0 }, { 1, 0.5, 0 }, { 2, 0, 1 }, { 3, 1, 1 } };
+  const Polyline longLine = { { 0, 0, 0 }, { 1, 0.5, 0 }, { 2, 0, 1 }, { 3, 1, 1 }, { 4, 0, 2 } };
+  const auto input = PolylinesData({ shortLine, longLine });
+  vtkNew<IllConditionedCubic> filter;
+  filter->SetInputData(input);
+  const FilterRun run = UpdateChecked(input, filter, { filter });
+  EXPECT_EQ(CountMessages(run.Warnings, { "cell 0", "ill-conditioned" }), 0) << Joined(run.Warnings);
+  EXPECT_EQ(CountMessages(run.Warnings, { "cell 1", "ill-conditioned", "1e+13" }), 1)
+    << Joined(run.Warnings);
+  vtkDataArray* condition = CellArray(run.Output, "ConditionEstimate");
+  EXPECT_EQ(condition->GetTuple1(0), 2.0);
+  EXPECT_EQ(condition->GetTuple1(1), 1e13);
   ExpectAllFinite(run.Output);
 }

@@ -47,7 +47,8 @@ for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb"):
 
 POINT_CONTRACT = {"Curvature": 1, "Torsion": 1, "Tangent": 3, "Normal": 3, "Binormal": 3,
                   "Parameter": 1, "ArcLength": 1, "SpanIndex": 1}
-CELL_CONTRACT = {"ShapePreserving": 1, "ShapeViolations": 1, "Length": 1, "Tortuosity": 1}
+CELL_CONTRACT = {"ShapePreserving": 1, "ShapeViolations": 1, "Length": 1, "Tortuosity": 1,
+                 "ConditionEstimate": 1}
 DISCRETE_ARRAYS = {"DiscreteCurvature": 1, "DiscreteTorsion": 1, "DiscreteBinormal": 3,
                    "Collinear": 1, "Convex": 1, "Coplanar": 1}
 AUDIT_CELL_ARRAYS = ["ShapeViolations", "ShapePreserving", "CollinearityViolations",
