@@ -1,0 +1,71 @@
+"""Runs every code block of README.md that is tagged for testing, as a user
+would run it from the repository:
+    <!-- test: pvpython -->   a pvpython script
+    <!-- test: python -->     Debian's python3 with the build's site-packages
+    <!-- test: shell -->      sh, with the build's bin/ on PATH
+    <!-- test: cpp FILE -->   the block appears verbatim in FILE (which another
+                              test compiles and runs)
+Usage: TestReadmeSnippets.py --source DIR --build DIR --temp DIR --xvfb-run CMD...
+"""
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--source", required=True)
+parser.add_argument("--build", required=True)
+parser.add_argument("--temp", required=True)
+parser.add_argument("--pvpython", required=True)
+parser.add_argument("--python", required=True)
+args = parser.parse_args()
+
+with open(os.path.join(args.source, "README.md")) as f:
+    readme = f.read()
+snippets = re.findall(r"<!-- test: (\w+)([^>]*?) -->\n```\w*\n(.*?)```", readme, re.S)
+work = os.path.join(args.temp, "readme")
+shutil.rmtree(work, ignore_errors=True)
+# The snippets use repository paths (Data/, build/...): run them in a copy of
+# that layout whose build/ is the build under test.
+os.makedirs(work)
+os.symlink(os.path.join(args.source, "Data"), os.path.join(work, "Data"))
+os.symlink(args.build, os.path.join(work, "build"))
+env = dict(os.environ)
+env["PYTHONPATH"] = os.path.join(args.build, "lib", "python3.11", "site-packages")
+env["PATH"] = os.path.join(args.build, "bin") + os.pathsep + env["PATH"]
+
+failures = []
+kinds = set()
+for number, (kind, target, code) in enumerate(snippets):
+    kinds.add(kind)
+    label = "README snippet %d (%s)" % (number + 1, kind)
+    if kind == "cpp":
+        with open(os.path.join(args.source, target.strip())) as f:
+            ok = code in f.read()
+        print(("ok   " if ok else "FAIL ") + label + ": in " + target.strip())
+        if not ok:
+            failures.append(label + " is not in " + target.strip())
+        continue
+    script = os.path.join(work, "snippet%d" % (number + 1))
+    with open(script, "w") as f:
+        f.write(code)
+    command = {"pvpython": [args.pvpython, script], "python": [args.python, script],
+               "shell": ["sh", "-e", script]}.get(kind)
+    if command is None:
+        failures.append(label + ": unknown kind")
+        continue
+    result = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True, timeout=300)
+    output = (result.stdout + result.stderr).strip()
+    print(("ok   " if result.returncode == 0 else "FAIL ") + label + ":\n    " + output.replace("\n", "\n    ")[-1500:])
+    if result.returncode != 0:
+        failures.append(label)
+
+for kind in ("pvpython", "python", "shell", "cpp"):
+    if kind not in kinds:
+        failures.append("no %s snippet found in README.md" % kind)
+if failures:
+    print("\nFAILED:\n  " + "\n  ".join(failures))
+    sys.exit(1)
+print("\nAll %d README snippets ran." % len(snippets))
