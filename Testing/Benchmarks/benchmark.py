@@ -1,7 +1,8 @@
 """Speed of the ShapeSplines cubic against vtkSplineFilter and SciPy, on the same input.
 
-Run (prints a table of output points per second and ratios, all measured in this run):
-    xvfb-run -a pvpython Testing/Benchmarks/benchmark.py --plugin build/lib/paraview-5.11/plugins/ShapeSplines/ShapeSplines.so
+Run (prints tables of output points per second and ratios, all measured in this run,
+cost growth, memory and accuracy, and writes plots into build/benchmark/):
+    bash Testing/Scripts/benchmark.sh
 
 Every contender produces the same number of output points per line (10 per span, the
 knots included). Ours also computes the Frenet frame, curvature, torsion, arc length
@@ -9,6 +10,7 @@ and the shape audit; vtkSplineFilter computes positions only; the SciPy route co
 positions, derivatives and curvature/torsion with NumPy.
 """
 import argparse
+import os
 import time
 
 import numpy as np
@@ -57,7 +59,7 @@ def best_time(run, repeats):
 
 def ours(poly, backend):
     vtkSMPTools.SetBackend(backend)
-    algorithm = simple.CubicSpline().GetClientSideObject()
+    algorithm = simple.CubicSpline(Input=simple.Line()).GetClientSideObject()
     algorithm.SetInputDataObject(0, poly)
 
     def run():
@@ -125,6 +127,7 @@ def accuracy(turns=6, seed=2):
     (curvature 0.4, torsion 0.2), clean and with Gaussian noise (a fraction of
     the radius), in the middle half of the curve."""
     rng = np.random.default_rng(seed)
+    errors = []
     print("\nAccuracy on the helix a=2, b=1: median relative error of torsion (curvature) in the middle half")
     print("%-10s %-6s %20s %24s %20s" % ("noise", "pts/turn", "ours (cubic)", "vtkSplineFilter + FD", "FD on raw points"))
     for noise in (0.0, 0.005):
@@ -133,7 +136,7 @@ def accuracy(turns=6, seed=2):
             xyz = np.stack([2 * np.cos(t), 2 * np.sin(t), t], axis=-1)
             xyz = xyz + rng.normal(scale=noise * 2.0, size=xyz.shape)
             poly = to_polydata(xyz[None])
-            algorithm = simple.CubicSpline().GetClientSideObject()
+            algorithm = simple.CubicSpline(Input=simple.Line()).GetClientSideObject()
             algorithm.SetInputDataObject(0, poly)
             algorithm.Update()
             out = algorithm.GetOutputDataObject(0).GetPointData()
@@ -147,12 +150,116 @@ def accuracy(turns=6, seed=2):
             dense = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
             vtk_k, vtk_t = finite_difference_geometry(dense)
             raw_k, raw_t = finite_difference_geometry(xyz)
-            row = []
+            row, row_errors = [], []
             for k, tau in ((ours_k, ours_t), (vtk_k, vtk_t), (raw_k, raw_t)):
                 et = np.median(np.abs(interior(tau) - 0.2)) / 0.2
                 ek = np.median(np.abs(interior(k) - 0.4)) / 0.4
                 row.append("%8.2g%% (%6.2g%%)" % (100 * et, 100 * ek))
+                row_errors.append(et)
             print("%-10s %-6d %20s %24s %20s" % ("%.1f%%" % (100 * noise), per_turn, *row))
+            errors.append((noise, per_turn, row_errors))
+    return errors
+
+
+def growth(output_folder):
+    """Time per output point on one line of 1e3 to 1e6 points (ours, one
+    thread): a linear method keeps it flat."""
+    print("\nCost growth, one line, 10 samples per span, one thread:")
+    print("%12s %14s %18s" % ("points", "seconds", "ns per out point"))
+    sizes, per_point = [], []
+    for n in (1000, 10000, 100000, 1000000):
+        poly = to_polydata(helix_lines(1, n))
+        seconds, points = best_time(ours(poly, "Sequential"), 3 if n < 1000000 else 1)
+        sizes.append(n)
+        per_point.append(1e9 * seconds / points)
+        print("%12d %14.3f %18.1f" % (n, seconds, per_point[-1]))
+    spread = max(per_point) / min(per_point)
+    print("largest / smallest time per output point: %.2f (flat within 30%% means <= 1.3)" % spread)
+    return sizes, per_point
+
+
+def memory(plugin, n=1000000):
+    """Peak resident memory of a fresh pvpython fitting one line of n points."""
+    import shutil
+    import subprocess
+    code = ("import resource, sys; sys.argv=['x']\n"
+            "from paraview import simple\n"
+            "simple.LoadPlugin(%r, remote=False)\n"
+            "import benchmark as b\n"
+            "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "poly = b.to_polydata(b.helix_lines(1, %d))\n"
+            "with_input = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "run = b.ours(poly, 'Sequential'); points = run()\n"
+            "peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "print(base, with_input, peak, points)\n" % (plugin, n))
+    here = os.path.dirname(os.path.abspath(__file__))
+    result = subprocess.run([shutil.which("pvpython"), "-c", code], cwd=here, capture_output=True, text=True,
+                            env=dict(os.environ, PYTHONPATH=here + os.pathsep + os.environ.get("PYTHONPATH", "")))
+    base, with_input, peak, points = (int(w) for w in result.stdout.split()[-4:])
+    print("\nMemory, one line of %d points (%d output points): peak RSS %.0f MiB, "
+          "of which the fit %.0f MiB = %.0f bytes per output point (the output arrays hold 160)"
+          % (n, points, peak / 1024, (peak - with_input) / 1024, (peak - with_input) * 1024 / points))
+
+
+def threads_identical(poly):
+    """The output does not depend on the number of threads."""
+    outputs = []
+    for backend in ("Sequential", "STDThread"):
+        vtkSMPTools.SetBackend(backend)
+        algorithm = simple.CubicSpline(Input=simple.Line()).GetClientSideObject()
+        algorithm.SetInputDataObject(0, poly)
+        algorithm.Update()
+        out = algorithm.GetOutputDataObject(0)
+        outputs.append([vtk_to_numpy(out.GetPoints().GetData())] +
+                       [vtk_to_numpy(out.GetPointData().GetArray(a)) for a in range(out.GetPointData().GetNumberOfArrays())])
+    same = all(np.array_equal(a, b) for a, b in zip(*outputs))
+    print("Output with 1 and 2 threads identical: %s" % ("yes" if same else "NO"))
+    return same
+
+
+def plot_growth(sizes, per_point, folder):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(folder, exist_ok=True)
+    figure, axes = plt.subplots(figsize=(6, 4))
+    axes.semilogx(sizes, per_point, "o-")
+    axes.set_xlabel("points on the line")
+    axes.set_ylabel("ns per output point")
+    axes.set_ylim(0, 1.3 * max(per_point))
+    axes.set_title("ShapeSplines cubic: cost per output point (one thread)")
+    axes.grid(True, which="both", alpha=0.3)
+    path = os.path.join(folder, "growth.png")
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    print("wrote", path)
+
+
+def plot_accuracy(errors, folder):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import matplotlib.ticker
+    os.makedirs(folder, exist_ok=True)
+    figure, axes = plt.subplots(figsize=(6, 4))
+    names = ("ours (cubic)", "vtkSplineFilter + FD", "FD on raw points")
+    for noise, style in ((0.0, "-"), (0.005, "--")):
+        rows = [e for e in errors if e[0] == noise]
+        for method, name in enumerate(names):
+            axes.loglog([r[1] for r in rows], [100 * r[2][method] for r in rows], style, marker="o",
+                        color="C%d" % method, label="%s, noise %.1f%%" % (name, 100 * noise))
+    axes.set_xticks([8, 16, 32, 64])
+    axes.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+    axes.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    axes.set_xlabel("points per turn")
+    axes.set_ylabel("median torsion error (%)")
+    axes.set_title("Helix a=2, b=1: torsion error versus density")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize=7)
+    path = os.path.join(folder, "accuracy.png")
+    figure.tight_layout()
+    figure.savefig(path, dpi=100)
+    print("wrote", path)
 
 
 def main():
@@ -160,10 +267,11 @@ def main():
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--lines", type=int, default=10000)
     parser.add_argument("--accuracy-only", action="store_true", help="skip the speed part")
+    parser.add_argument("--output", default="build/benchmark", help="folder for the plots")
     args = parser.parse_args()
     simple.LoadPlugin(args.plugin, remote=False)
     if args.accuracy_only:
-        accuracy()
+        plot_accuracy(accuracy(), args.output)
         return
 
     cases = [("%d lines x 50 points" % args.lines, helix_lines(args.lines, 50), 3)]
@@ -185,7 +293,11 @@ def main():
             name, rates["seq"], rates["thr"], rates["vtk"], rates["scipy"],
             rates["thr"] / rates["vtk"], rates["thr"] / rates["scipy"], rates["thr"] / rates["seq"]))
     print("(output points per second; ratios use ours with STDThread)")
-    accuracy()
+    threads_identical(to_polydata(helix_lines(2000, 50)))
+    sizes, per_point = growth(args.output)
+    memory(args.plugin)
+    plot_growth(sizes, per_point, args.output)
+    plot_accuracy(accuracy(), args.output)
 
 
 if __name__ == "__main__":
