@@ -161,44 +161,44 @@ def accuracy(turns=6, seed=2):
     return errors
 
 
-def growth(output_folder):
-    """Time per output point on one line of 1e3 to 1e6 points (ours, one
-    thread): a linear method keeps it flat."""
-    print("\nCost growth, one line, 10 samples per span, one thread:")
-    print("%12s %14s %18s" % ("points", "seconds", "ns per out point"))
-    sizes, per_point = [], []
-    for n in (1000, 10000, 100000, 1000000):
-        poly = to_polydata(helix_lines(1, n))
-        seconds, points = best_time(ours(poly, "Sequential"), 3 if n < 1000000 else 1)
-        sizes.append(n)
-        per_point.append(1e9 * seconds / points)
-        print("%12d %14.3f %18.1f" % (n, seconds, per_point[-1]))
-    spread = max(per_point) / min(per_point)
-    print("largest / smallest time per output point: %.2f (flat within 30%% means <= 1.3)" % spread)
-    return sizes, per_point
-
-
-def memory(plugin, n=1000000):
-    """Peak resident memory of a fresh pvpython fitting one line of n points."""
+def cold_run(plugin, n):
+    """Fits one line of n points once, in a fresh pvpython (cold memory: what a
+    user's first run pays, page faults included): seconds, output points and the
+    peak resident memory before and after the fit, in KiB."""
     import shutil
     import subprocess
-    code = ("import resource, sys; sys.argv=['x']\n"
+    code = ("import resource, sys, time; sys.argv=['x']\n"
             "from paraview import simple\n"
             "simple.LoadPlugin(%r, remote=False)\n"
             "import benchmark as b\n"
-            "base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
             "poly = b.to_polydata(b.helix_lines(1, %d))\n"
-            "with_input = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-            "run = b.ours(poly, 'Sequential'); points = run()\n"
+            "before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "run = b.ours(poly, 'Sequential')\n"
+            "start = time.perf_counter(); points = run(); seconds = time.perf_counter() - start\n"
             "peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
-            "print(base, with_input, peak, points)\n" % (plugin, n))
+            "print(seconds, points, before, peak)\n" % (plugin, n))
     here = os.path.dirname(os.path.abspath(__file__))
     result = subprocess.run([shutil.which("pvpython"), "-c", code], cwd=here, capture_output=True, text=True,
                             env=dict(os.environ, PYTHONPATH=here + os.pathsep + os.environ.get("PYTHONPATH", "")))
-    base, with_input, peak, points = (int(w) for w in result.stdout.split()[-4:])
-    print("\nMemory, one line of %d points (%d output points): peak RSS %.0f MiB, "
-          "of which the fit %.0f MiB = %.0f bytes per output point (the output arrays hold 160)"
-          % (n, points, peak / 1024, (peak - with_input) / 1024, (peak - with_input) * 1024 / points))
+    words = result.stdout.split()[-4:]
+    return float(words[0]), int(words[1]), int(words[2]), int(words[3])
+
+
+def growth(plugin):
+    """Time per output point and memory on one line of 1e3 to 1e6 points (ours,
+    one thread, each size in a fresh process): a linear method keeps it flat."""
+    print("\nCost growth, one line, 10 samples per span, one thread, first run in a fresh process:")
+    print("%10s %10s %18s %16s %18s" % ("points", "seconds", "ns per out point", "peak RSS MiB", "fit bytes/out pt"))
+    sizes, per_point = [], []
+    for n in (1000, 10000, 100000, 1000000):
+        seconds, points, before, peak = cold_run(plugin, n)
+        sizes.append(n)
+        per_point.append(1e9 * seconds / points)
+        print("%10d %10.3f %18.1f %16.0f %18.0f" % (n, seconds, per_point[-1], peak / 1024,
+                                                     (peak - before) * 1024 / points))
+    print("largest / smallest time per output point: %.2f (flat within 30%% means <= 1.3); "
+          "the output arrays alone hold 148 bytes per point" % (max(per_point) / min(per_point)))
+    return sizes, per_point
 
 
 def threads_identical(poly):
@@ -294,8 +294,7 @@ def main():
             rates["thr"] / rates["vtk"], rates["thr"] / rates["scipy"], rates["thr"] / rates["seq"]))
     print("(output points per second; ratios use ours with STDThread)")
     threads_identical(to_polydata(helix_lines(2000, 50)))
-    sizes, per_point = growth(args.output)
-    memory(args.plugin)
+    sizes, per_point = growth(args.plugin)
     plot_growth(sizes, per_point, args.output)
     plot_accuracy(accuracy(), args.output)
 
