@@ -87,8 +87,11 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
     }
     const auto frames = frenetFrames(values, thresholds, j > 0 ? &lastNormal : nullptr);
     lastNormal = frames[subdivisions - 1].Normal; // the next span starts after this sample
-    const bool lastOfOpenCurve = !curve.isClosed() && j == spans - 1;
-    for (int k = 0; k < (lastOfOpenCurve ? subdivisions + 1 : subdivisions); ++k)
+    // Both ends of every span: torsion is one-sided at a knot (the third
+    // derivative jumps), so each knot is audited from both sides, and the
+    // audit, and the automatic modes driven by it, do not depend on the
+    // direction of the line.
+    for (int k = 0; k <= subdivisions; ++k)
     {
       AuditSample sample;
       sample.Span = j;

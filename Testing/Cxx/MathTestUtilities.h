@@ -44,6 +44,27 @@ inline std::vector<Vec3> akima()
     { 10, 10, 10, 10, 10, 10, 10.5, 15, 50, 60, 85 });
 }
 
+/// RPN 15A, Fritsch & Carlson (1980): monotone data a cubic makes wiggle.
+inline std::vector<Vec3> rpn15a()
+{
+  return planar({ 7.99, 8.09, 8.19, 8.7, 9.2, 10, 12, 15, 20 },
+    { 0, 2.76429e-5, 4.37498e-2, 0.169183, 0.469428, 0.943740, 0.998636, 0.999919, 0.999994 });
+}
+
+/// Titanium heat data, de Boor, A Practical Guide to Splines.
+inline std::vector<Vec3> titanium()
+{
+  std::vector<double> x;
+  for (int i = 0; i < 49; ++i)
+  {
+    x.push_back(595.0 + 10.0 * i);
+  }
+  return planar(x, { .644, .622, .638, .649, .652, .639, .646, .657, .652, .655, .644, .663, .663,
+                      .668, .676, .676, .686, .679, .678, .683, .694, .699, .710, .730, .763, .812,
+                      .907, 1.044, 1.336, 1.881, 2.169, 2.075, 1.598, 1.211, .916, .746, .672,
+                      .627, .615, .607, .606, .609, .603, .601, .603, .601, .611, .601, .608 });
+}
+
 inline CurveBuilder cubicBuilder(CubicEndCondition ends = CubicEndCondition::NotAKnot)
 {
   return [ends](const FitContext& context) {

@@ -1,6 +1,7 @@
 // Metamorphic tests: a rigid motion, a uniform scaling, a mirror or a
 // reversal of the data must transform the fitted curve the same way. Every
 // spline family joins by adding its builder to Families below.
+#include "GeneralizedCubicSpline.h"
 #include "MathTestUtilities.h"
 
 #include <gtest/gtest.h>
@@ -21,12 +22,25 @@ struct Family
   bool Closed;
 };
 
+CurveBuilder generalizedCubic(SpaceKind kind, double tension)
+{
+  GeneralizedCubicOptions options;
+  options.Kind = kind;
+  options.Automatic = false;
+  options.Tension = tension;
+  return generalizedCubicBuilder(options);
+}
+
 std::vector<Family> Families()
 {
   return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
     { "CubicNatural", cubicBuilder(CubicEndCondition::Natural), false },
     { "CubicClamped", cubicBuilder(CubicEndCondition::Clamped), false },
-    { "CubicPeriodic", cubicBuilder(), true } };
+    { "CubicPeriodic", cubicBuilder(), true },
+    { "GeneralizedExponentialAutomatic", generalizedCubicBuilder({}), false },
+    { "GeneralizedExponentialClosed", generalizedCubicBuilder({}), true },
+    { "GeneralizedTrigonometricFixed", generalizedCubic(SpaceKind::Trigonometric, 2.0), false },
+    { "GeneralizedVariableDegreeFixed", generalizedCubic(SpaceKind::VariableDegree, 7.0), false } };
 }
 
 /// Uneven, non-planar data: a conical helix with a kink.
