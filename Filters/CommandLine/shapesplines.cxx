@@ -3,6 +3,7 @@
 //   shapesplines audit INPUT [CURVE] [options]   discrete shape, and a curve's audit
 // Reads .vtp, legacy .vtk and .csv; writes .vtp or .csv. Run with --help.
 #include "vtkCubicSplineFilter.h"
+#include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
 
 #include "vtkCallbackCommand.h"
@@ -67,8 +68,15 @@ OUTPUT is never INPUT.
 
 Options of fit:
   --family NAME          spline family (default cubic):
-                           cubic   classical C2 cubic spline (the baseline)
+                           cubic     classical C2 cubic spline (the baseline)
+                           gencubic  C2 generalized cubic, automatic tension
   --end-condition NAME   cubic: not-a-knot (default), natural or clamped
+  --kind NAME            gencubic: exponential (default), trigonometric,
+                         variable-degree or polynomial
+  --tension T            gencubic: starting tension (fixed with --fixed);
+                         the degree for variable-degree (default 0)
+  --max-tension T        gencubic: cap of the automatic tension (default 1000)
+  --fixed                gencubic: no automatic tension, every span gets T
   --parameterization P   chord (default), centripetal or uniform knots
   --closed               close every line of 3 or more distinct points
   --samples N            N samples per span between data points (default 10)
@@ -160,9 +168,10 @@ struct Arguments
   }
 };
 
-const std::set<std::string> ValueOptions = { "output", "family", "end-condition",
-  "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
-const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "quiet", "help" };
+const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
+  "tension", "max-tension", "parameterization", "samples", "arc-length", "data-tolerance",
+  "curve-tolerance" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "quiet", "help" };
 
 Arguments Parse(int argc, char* argv[])
 {
@@ -610,7 +619,25 @@ std::map<std::string, FamilyFactory> Families()
               }
               filter->SetEndCondition(names.at(ends));
               return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-            } } };
+            } },
+    { "gencubic", [](Arguments& args) {
+       auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
+       const std::string kind = args.Value("kind", "exponential");
+       const std::map<std::string, int> kinds = { { "polynomial",
+                                                    vtkGeneralizedCubicSplineFilter::POLYNOMIAL },
+         { "exponential", vtkGeneralizedCubicSplineFilter::EXPONENTIAL },
+         { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
+         { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } };
+       if (!kinds.count(kind))
+       {
+         throw UsageError("--kind must be polynomial, exponential, trigonometric or variable-degree");
+       }
+       filter->SetSpaceKind(kinds.at(kind));
+       filter->SetAutomaticTension(!args.Flag("fixed"));
+       filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
+       filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } } };
 }
 
 int Fit(Arguments& args)

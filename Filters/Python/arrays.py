@@ -24,7 +24,7 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import shapesplines
 
-FAMILIES = {"cubic": "vtkCubicSplineFilter"}
+FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter"}
 
 _POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
                  "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",

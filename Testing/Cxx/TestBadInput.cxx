@@ -8,6 +8,7 @@
 
 #include "vtkCubicSplineFilter.h"
 #include "vtkFloatArray.h"
+#include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkShapeSplineFilter.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +26,15 @@ struct SplineFilter
 std::vector<SplineFilter> Filters()
 {
   return { { "Cubic", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
-                             vtkSmartPointer<vtkCubicSplineFilter>::New()); } } };
+                             vtkSmartPointer<vtkCubicSplineFilter>::New()); } },
+    { "GeneralizedCubic", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
+                                vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New()); } },
+    { "GeneralizedCubicVariableDegree", [] {
+       auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
+       filter->SetSpaceKindToVariableDegree();
+       filter->SetTension(3.0);
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } } };
 }
 
 /// A curved, non-planar line (part of a conical helix), scaled and moved.

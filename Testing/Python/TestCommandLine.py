@@ -82,7 +82,7 @@ def helix(per_turn, turns, a=2.0, b=1.0):
 
 # ---------------------------------------------------------------------------- help
 code, out, err = run("--help")
-options = ["--family", "--end-condition", "--parameterization", "--closed", "--samples", "--arc-length",
+options = ["--family", "--end-condition", "--kind", "--tension", "--max-tension", "--fixed", "--parameterization", "--closed", "--samples", "--arc-length",
            "--vmtk-names", "--data-tolerance", "--curve-tolerance", "--output", "--quiet", "--help"]
 missing = [o for o in options if o not in out]
 check(code == 0 and "fit INPUT" in out and "audit INPUT" in out and not missing,
@@ -132,6 +132,15 @@ code, out, err = run("fit", os.path.join(args.data, "aorta-centerline.vtp"), "-o
 check(code == 0 and os.path.getsize(temp("aorta.vtp")) > 0 and out.count("\nline ") + out.startswith("line ") == 2,
       "fit aorta.vtp -> .vtp with family options, arc-length sampling and VMTK names", out.strip()[-60:])
 
+code, out, err = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-gencubic.csv"),
+                     "--family", "gencubic", "--kind", "exponential", "--max-tension", "500")
+code2, out2, _ = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-cubic.csv"))
+gencubic = read_csv(temp("akima-gencubic.csv"))
+check(code == 0 and "shape violations 0" in out and "shape violations 0" not in out2
+      and gencubic["Tension"].max() > 0 and gencubic["Tension"].max() <= 500,
+      "--family gencubic keeps Akima's shape where the cubic does not; Tension written",
+      "%s | %s" % (out.strip().splitlines()[0], out2.strip().splitlines()[0]))
+
 # ---------------------------------------------------------------------------- audit
 code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
 rows = [l for l in out.splitlines() if l.startswith("line ")]
@@ -152,6 +161,9 @@ cases = [
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--samples", "3", "--arc-length", "1"), 1, "not both"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "bezier"), 1, "unknown --family"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--end-condition", "free"), 1, "--end-condition must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "gencubic", "--kind", "spline"), 1, "--kind must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "gencubic", "--tension", "-1"), 1, "--tension must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--kind", "exponential"), 1, "unknown option --kind for this"),
     (("fit", temp("two.csv")), 1, "needs -o"),
     (("fit", temp("two.csv"), "-o"), 1, "needs a value"),
     (("audit",), 1, "audit takes INPUT"),

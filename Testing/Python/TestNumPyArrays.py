@@ -58,6 +58,17 @@ closed = fit_curves(np.array([[math.cos(a), math.sin(a), 0] for a in np.linspace
 check(len(closed.points) > 60 and np.allclose(closed.curvature, 1.0, rtol=0.02)
       and np.all(closed.torsion == 0), "closed circle, arc-length sampling: curvature 1, torsion 0")
 
+# Another family, with its options: the shape-preserving generalized cubic on Akima's data.
+akima = np.array([[0, 10, 0], [2, 10, 0], [3, 10, 0], [5, 10, 0], [6, 10, 0], [8, 10, 0], [9, 10.5, 0],
+                  [11, 15, 0], [12, 50, 0], [14, 60, 0], [15, 85, 0]], float)
+cubic = fit_curves(akima)
+tense = fit_curves(akima, family="gencubic", space_kind="exponential", max_tension=500.0)
+check(cubic.shape_violations > 0 and tense.shape_violations == 0 and 0 < tense.cell_arrays["MaxTension"][0] <= 500
+      and np.all(tense.torsion == 0),
+      "family='gencubic': Akima's shape kept where the cubic breaks it",
+      "%d and %d violations, MaxTension %g" % (cubic.shape_violations, tense.shape_violations,
+                                               tense.cell_arrays["MaxTension"][0]))
+
 # Bad input: clear Python errors.
 for bad, what in [(np.zeros((4, 2)), "(n, 2) array"), ([np.zeros((3, 3)), np.zeros(3)], "a 1-D line")]:
     try:

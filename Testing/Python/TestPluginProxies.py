@@ -41,7 +41,7 @@ args = parser.parse_args()
 if not os.path.isfile(args.plugin):
     raise SystemExit("plugin not found: %s" % args.plugin)
 LoadPlugin(args.plugin, remote=False, ns=globals())
-for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb"):
+for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "GeneralizedCubicSpline"):
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
@@ -287,7 +287,7 @@ def check_curve(label, out, inp, expected_points=None, subdivisions=None):
 print("== documentation of every property")
 helix = reader("helix.vtp")
 for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
-              CurvatureComb(Input=CubicSpline(Input=helix))):
+              CurvatureComb(Input=CubicSpline(Input=helix)), GeneralizedCubicSpline(Input=helix)):
     name = proxy.GetXMLName()
     doc = proxy.SMProxy.GetDocumentation()
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
@@ -307,7 +307,11 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "PolylineShapeAnalysis": ["Input", "Curve", "Closed", "DataShapeTolerance",
                                           "CurveShapeTolerance"],
                 "CurvatureComb": ["Input", "CombType", "ScaleMode", "RelativeToothLength", "ScaleFactor",
-                                  "Stride", "Envelope"]}[name]
+                                  "Stride", "Envelope"],
+                "GeneralizedCubicSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
+                                           "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
+                                           "CurveShapeTolerance", "VMTKArrayNames", "SpaceKind",
+                                           "AutomaticTension", "Tension", "MaxTension"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
@@ -725,6 +729,26 @@ out = run(comb, "CurvatureComb(akima cubic, Torsion)")
 # A planar curve has zero torsion: the torsion comb has zero-length teeth.
 check(np.allclose(points_of(out)[0::2][:teeth], points_of(out)[1::2][:teeth], atol=1e-12 * diagonal),
       "CurvatureComb(Torsion) of a planar curve has zero-length teeth")
+
+# =========================================================================== GeneralizedCubicSpline
+print("== GeneralizedCubicSpline on the classic shape data")
+for file_name in ("akima.vtp", "rpn15a.vtp", "titanium.vtp"):
+    src = reader(file_name)
+    plain = fetch(LOG.watch(CubicSpline(Input=src)))
+    spline = LOG.watch(GeneralizedCubicSpline(Input=src))
+    out = run(spline, "GeneralizedCubicSpline(%s)" % file_name)
+    tension = point_array(out, "Tension")
+    check(cell_array(plain, "ShapeViolations")[0] > 0 and cell_array(out, "ShapeViolations")[0] == 0
+          and cell_array(out, "MaxTension")[0] == tension.max() > 0 and tension.min() == 0,
+          "%s: the cubic breaks the shape, the automatic tension does not, and only some spans are tensioned"
+          % file_name, "cubic %d violations, generalized %d; tension %s..%s"
+          % (cell_array(plain, "ShapeViolations")[0], cell_array(out, "ShapeViolations")[0],
+             fmt(tension.min()), fmt(tension.max())))
+spline = LOG.watch(GeneralizedCubicSpline(Input=reader("akima.vtp"), SpaceKind="Trigonometric", Tension=5.0,
+                                          AutomaticTension=0))
+out = run(spline, "GeneralizedCubicSpline(akima, Trigonometric, Tension=5)", ("limited to 0.99 pi",))
+check(abs(point_array(out, "Tension").max() - 0.99 * np.pi) < 1e-12,
+      "Trigonometric tension 5 is limited to 0.99 pi, with a warning")
 
 # =========================================================================== summary
 elapsed = time.time() - START
