@@ -5,11 +5,15 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <string>
 
 vtkStandardNewMacro(vtkGeneralizedCubicSplineFilter);
 
 vtkGeneralizedCubicSplineFilter::vtkGeneralizedCubicSplineFilter() = default;
-vtkGeneralizedCubicSplineFilter::~vtkGeneralizedCubicSplineFilter() = default;
+vtkGeneralizedCubicSplineFilter::~vtkGeneralizedCubicSplineFilter()
+{
+  this->SetTensionArrayName(nullptr);
+}
 
 const char* vtkGeneralizedCubicSplineFilter::GetSpaceKindAsString()
 {
@@ -50,6 +54,12 @@ int vtkGeneralizedCubicSplineFilter::RequestData(
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 
+const char* vtkGeneralizedCubicSplineFilter::GetPointValuesArrayName()
+{
+  const char* name = this->TensionArrayName;
+  return name && std::string(name) != "None" ? name : nullptr;
+}
+
 shapesplines::BuiltCurve vtkGeneralizedCubicSplineFilter::BuildCurve(
   const shapesplines::FitContext& context) const
 {
@@ -68,4 +78,6 @@ void vtkGeneralizedCubicSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticTension: " << (this->AutomaticTension ? "On" : "Off") << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaxTension: " << this->MaxTension << "\n";
+  os << indent << "TensionArrayName: "
+     << (this->TensionArrayName ? this->TensionArrayName : "(none)") << "\n";
 }

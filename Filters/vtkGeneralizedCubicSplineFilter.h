@@ -89,6 +89,17 @@ public:
   vtkGetMacro(MaxTension, double);
   ///@}
 
+  ///@{
+  /**
+   * The name of an input point array giving a tension per point (empty or
+   * "None", the default: none; "None" is what ParaView's panel sends). A span then gets the larger of its two points' tensions
+   * (fixed) or starts from it (automatic), instead of Tension; negative or
+   * non-finite values fall back to Tension.
+   */
+  vtkSetStringMacro(TensionArrayName);
+  vtkGetStringMacro(TensionArrayName);
+  ///@}
+
 protected:
   vtkGeneralizedCubicSplineFilter();
   ~vtkGeneralizedCubicSplineFilter() override;
@@ -98,11 +109,13 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  const char* GetPointValuesArrayName() override;
 
   int SpaceKind = EXPONENTIAL;
   bool AutomaticTension = true;
   double Tension = 0.0;
   double MaxTension = 1000.0;
+  char* TensionArrayName = nullptr;
 
 private:
   vtkGeneralizedCubicSplineFilter(const vtkGeneralizedCubicSplineFilter&) = delete;

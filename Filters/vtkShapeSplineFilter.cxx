@@ -216,6 +216,16 @@ int vtkShapeSplineFilter::RequestData(
   };
 
   vtkPoints* inPoints = input->GetPoints();
+  vtkDataArray* pointValues = nullptr;
+  const char* valuesName = this->GetPointValuesArrayName();
+  if (valuesName && *valuesName)
+  {
+    pointValues = input->GetPointData()->GetArray(valuesName);
+    if (!pointValues)
+    {
+      vtkWarningMacro("No point array named '" << valuesName << "' in the input: ignored.");
+    }
+  }
   vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
     {
@@ -225,9 +235,14 @@ int vtkShapeSplineFilter::RequestData(
       {
         inPoints->GetPoint(line.PointIds[i], points[i].data());
       }
+      std::vector<double> values;
+      for (size_t i = 0; pointValues && i < points.size(); ++i)
+      {
+        values.push_back(pointValues->GetComponent(line.PointIds[i], 0));
+      }
       try
       {
-        line.Fit = shapesplines::fitPolyline(points, options, build);
+        line.Fit = shapesplines::fitPolyline(points, options, build, values);
       }
       catch (const std::exception& e)
       {

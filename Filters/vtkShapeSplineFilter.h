@@ -173,6 +173,13 @@ protected:
   virtual shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const = 0;
 #endif
 
+  /**
+   * The name of an input point array whose values the family reads per point
+   * (FitContext::PointValues), or null (default). A missing array is ignored
+   * with a warning; of a multi-component array the first component is used.
+   */
+  virtual const char* GetPointValuesArrayName() { return nullptr; }
+
   int Parameterization = CHORD_LENGTH;
   bool Closed = false;
   int SamplingMode = SUBDIVISIONS;

@@ -167,9 +167,13 @@ SampledCurve sampleFit(const FittedPolyline& fit)
   return sampled;
 }
 
-FittedPolyline fitPolyline(
-  const std::vector<Vec3>& points, const FitOptions& options, const CurveBuilder& build)
+FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& options,
+  const CurveBuilder& build, const std::vector<double>& pointValues)
 {
+  if (!pointValues.empty() && pointValues.size() != points.size())
+  {
+    throw std::invalid_argument("point values do not match the points");
+  }
   for (size_t i = 0; i < points.size(); ++i)
   {
     if (!points[i].allFinite())
@@ -227,7 +231,12 @@ FittedPolyline fitPolyline(
   }
   else
   {
-    built = build(FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise });
+    std::vector<double> values;
+    for (size_t i = 0; i < fit.Data.SourceIndex.size() && !pointValues.empty(); ++i)
+    {
+      values.push_back(pointValues[fit.Data.SourceIndex[i]]);
+    }
+    built = build(FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values });
   }
   fit.Spline = std::move(built.Spline);
   fit.ShapeReference = std::move(built.ShapeReference);

@@ -40,6 +40,8 @@ struct FitContext
   const std::vector<double>& Knots;
   const FitOptions& Options;
   double CoordinateNoise = 0.0;
+  /// A user's value per cleaned point (e.g. a starting tension), or empty.
+  const std::vector<double>& PointValues;
 
   /// The audit of a curve against the Definition 1 shape of reference, a
   /// polygon with one vertex per knot of the curve: the data for an
@@ -133,11 +135,12 @@ constexpr double LargestCoordinate = 1e300;
 /**
  * Cleans the points, computes knots, builds the curve (two distinct points
  * give the straight segment whatever the family), audits its shape and plans
- * its sampling. Throws std::invalid_argument for non-finite points and for
+ * its sampling. pointValues, one per input point or none, reach the builder
+ * as FitContext::PointValues, one per cleaned point. Throws std::invalid_argument for non-finite points and for
  * coordinates beyond LargestCoordinate.
  */
-FittedPolyline fitPolyline(
-  const std::vector<Vec3>& points, const FitOptions& options, const CurveBuilder& build);
+FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& options,
+  const CurveBuilder& build, const std::vector<double>& pointValues = {});
 
 /**
  * Samples a fitted curve as planned, with Frenet frames, curvature and torsion

@@ -390,8 +390,22 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
 {
   return [options](const FitContext& context) {
     const int spans = static_cast<int>(context.Knots.size()) - 1;
-    const double start = largestTension(options.Kind, std::min(options.Tension, options.MaxTension));
-    std::vector<double> tension(spans, start);
+    // Per span: the larger tension of its two points when the user gave them
+    // (a value out of range counts as Tension), else Tension.
+    const auto& given = context.PointValues;
+    auto pointTension = [&](size_t i) {
+      const double value = given[i % given.size()];
+      return std::isfinite(value) && value >= 0.0 ? value : options.Tension;
+    };
+    std::vector<double> tension(spans, options.Tension);
+    for (int k = 0; k < spans && !given.empty(); ++k)
+    {
+      tension[k] = std::max(pointTension(k), pointTension(k + 1));
+    }
+    for (double& p : tension)
+    {
+      p = largestTension(options.Kind, std::min(p, options.MaxTension));
+    }
     auto build = [&]() {
       std::vector<SpaceKernel> kernels;
       kernels.reserve(spans);

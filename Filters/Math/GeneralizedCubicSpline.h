@@ -124,7 +124,11 @@ struct GeneralizedCubicOptions
 /// The tension after one more round of the automatic mode (0 stays 0 only for Polynomial).
 double raisedTension(SpaceKind kind, double tension, double maxTension);
 
-/// Builder of generalized cubic splines through the data, fixed or automatic.
+/**
+ * Builder of generalized cubic splines through the data, fixed or automatic.
+ * The context's PointValues, if any, are tensions per point: a span starts
+ * from the larger of its two points' (instead of Tension).
+ */
 CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options);
 } // namespace shapesplines
 

@@ -134,3 +134,40 @@ TEST(GeneralizedCubicSplineFilter, AutomaticModeReachingItsCapReportsTheViolatio
   EXPECT_EQ(CellArray(capped.Output, "MaxTension")->GetTuple1(0), 1.0);
   ExpectAllFinite(capped.Output);
 }
+
+TEST(GeneralizedCubicSplineFilter, TensionPerPointFromAnInputArray)
+{
+  // The helix with a point array: 50 on points 10 and 11, 0 elsewhere, -1 (out of range) on point 20.
+  const auto data = DeepCopy(ReadData("helix.vtp"));
+  vtkNew<vtkDoubleArray> given;
+  given->SetName("Stiffness");
+  given->SetNumberOfTuples(data->GetNumberOfPoints());
+  given->Fill(0.0);
+  given->SetValue(10, 50.0);
+  given->SetValue(11, 50.0);
+  given->SetValue(20, -1.0);
+  data->GetPointData()->AddArray(given);
+  const FilterRun run = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
+    f->AutomaticTensionOff();
+    f->SetTension(2.0);
+    f->SetTensionArrayName("Stiffness");
+  });
+  ExpectNoMessages(run);
+  vtkDataArray* tension = PointArray(run.Output, "Tension");
+  vtkDataArray* span = PointArray(run.Output, "SpanIndex");
+  for (vtkIdType i = 0; i < tension->GetNumberOfTuples(); ++i)
+  {
+    const int j = static_cast<int>(span->GetTuple1(i));
+    // Spans 9-11 touch points 10 or 11; spans 19 and 20 touch point 20 (-1 falls back to 2).
+    const double expected = (j >= 9 && j <= 11) ? 50.0 : (j == 19 || j == 20 ? 2.0 : 0.0);
+    ASSERT_EQ(tension->GetTuple1(i), expected) << "sample " << i << " span " << j;
+  }
+  const FilterRun missing = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
+    f->SetTensionArrayName("NoSuchArray");
+  });
+  EXPECT_EQ(CountMessages(missing.Warnings, { "NoSuchArray", "ignored" }), 1) << Joined(missing.Warnings);
+  const FilterRun none = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
+    f->SetTensionArrayName("None");
+  });
+  ExpectNoMessages(none);
+}

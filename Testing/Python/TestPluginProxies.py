@@ -311,7 +311,8 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "GeneralizedCubicSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                            "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                            "CurveShapeTolerance", "VMTKArrayNames", "SpaceKind",
-                                           "AutomaticTension", "Tension", "MaxTension"]}[name]
+                                           "AutomaticTension", "Tension", "MaxTension",
+                                           "TensionArray"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
