@@ -27,6 +27,7 @@
 // [2^-N, 2^N] (e.g. N=200, about 1e+-60) to fuzz past known dynamic-range failures.
 #include "CubicSpline.h"
 #include "FitPolyline.h"
+#include "GeneralizedCubicSpline.h"
 #include "Parameterization.h"
 #include "ShapeAnalysis.h"
 
@@ -133,6 +134,9 @@ struct Input
 {
   ss::FitOptions Options;
   ss::CubicEndCondition Ends = ss::CubicEndCondition::NotAKnot;
+  /// 0-3: the cubic; 4-7: generalized cubic, automatic exponential,
+  /// trigonometric and variable degree, and fixed exponential tension 50.
+  int Family = 0;
   std::vector<ss::Vec3> Points;
 };
 
@@ -148,6 +152,7 @@ Input decode(const uint8_t* data, size_t size)
   o.Sampling.SampleMode =
     (flags & 2) != 0 ? ss::SamplingOptions::Mode::ArcLength : ss::SamplingOptions::Mode::Subdivisions;
   const int encoding = (flags >> 2) & 3;
+  input.Family = (flags >> 5) & 7;
   if ((flags & 16) != 0)
   {
     o.CoordinatePrecision = FLT_EPSILON;
@@ -196,10 +201,10 @@ void print(const Input& input)
   static const char* const knots[] = { "Uniform", "ChordLength", "Centripetal" };
   static const char* const ends[] = { "Natural", "NotAKnot", "Clamped" };
   std::fprintf(stderr,
-    "fuzz_fit input: knots %s, ends %s, closed %d, sampling %s, subdivisions %d, "
+    "fuzz_fit input: family %d, knots %s, ends %s, closed %d, sampling %s, subdivisions %d, "
     "audit subdivisions %d, target length %.17g, maximum samples %ld, tolerances data %g "
     "curve %g, coordinate precision %g, %zu points:\n",
-    knots[static_cast<int>(o.Knots)], ends[static_cast<int>(input.Ends)],
+    input.Family, knots[static_cast<int>(o.Knots)], ends[static_cast<int>(input.Ends)],
     static_cast<int>(o.Closed),
     o.Sampling.SampleMode == ss::SamplingOptions::Mode::ArcLength ? "ArcLength" : "Subdivisions",
     o.Sampling.Subdivisions, o.AuditSubdivisions, o.Sampling.TargetLength,
@@ -366,12 +371,22 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   checkCleaning(points, options);
 
   const ss::CubicEndCondition ends = input.Ends;
-  const ss::CurveBuilder build = [ends](const ss::FitContext& context) {
+  ss::CurveBuilder build = [ends](const ss::FitContext& context) {
     ss::BuiltCurve built;
     built.Spline = std::make_unique<ss::CubicSpline>(ss::CubicSpline::interpolate(
       context.Data.Points, context.Knots, context.Data.Closed, ends));
     return built;
   };
+  if (input.Family >= 4)
+  {
+    ss::GeneralizedCubicOptions generalized;
+    const ss::SpaceKind kinds[] = { ss::SpaceKind::Exponential, ss::SpaceKind::Trigonometric,
+      ss::SpaceKind::VariableDegree, ss::SpaceKind::Exponential };
+    generalized.Kind = kinds[input.Family - 4];
+    generalized.Automatic = input.Family != 7;
+    generalized.Tension = input.Family == 7 ? 50.0 : 0.0;
+    build = ss::generalizedCubicBuilder(generalized);
+  }
 
   ss::FittedPolyline fit;
   try
