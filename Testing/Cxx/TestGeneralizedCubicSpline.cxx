@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
+
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -396,6 +398,63 @@ TEST(GeneralizedCubicSpline, InterpolatesAndIsC2AtEveryKnotWithMixedKinds)
       EXPECT_LT(spline.evaluate(knots.back(), 2)[2].norm(), 1e-12);
     }
   }
+}
+
+TEST(GeneralizedBSplines, InterpolationInTheBSplineBasisIsTheInterpolatingSpline)
+{
+  // The interpolant, built from the paper's generalized B-splines: solve for the
+  // de Boor values P_i (knots x_0..x_n of the first example's data range, mixed
+  // kinds) with s(x_j) = y_j and natural ends, then compare with the solver.
+  const PaperExample e = Example(2);
+  const int m = static_cast<int>(e.Knots.size()) - 1; // intervals; data knots are 3..7
+  const std::vector<double> y = { 1.0, -0.5, 2.0, 0.3, 1.2 };
+  const int unknowns = m + 1;
+  Eigen::MatrixXd a = Eigen::MatrixXd::Zero(7, unknowns);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(7);
+  for (int j = 0; j < 5; ++j)
+  {
+    const int k = std::min(3 + j, 6); // the interval starting at x_j (the last: its end)
+    const double t = 3 + j <= 6 ? 0.0 : 1.0;
+    for (int i = 0; i < unknowns; ++i)
+    {
+      a(j, i) = BSpline(e, i, k, t)[0];
+    }
+    b(j) = y[j];
+  }
+  for (int i = 0; i < unknowns; ++i)
+  {
+    a(5, i) = BSpline(e, i, 3, 0.0)[2]; // s''(x_0) = 0
+    a(6, i) = BSpline(e, i, 6, 1.0)[2]; // s''(x_4) = 0
+  }
+  // Only the de Boor values whose B-splines reach [x_0, x_4] matter: least squares
+  // picks the minimum-norm solution, whose curve on [x_0, x_4] is unique.
+  const Eigen::VectorXd deBoor = a.completeOrthogonalDecomposition().solve(b);
+  ASSERT_LT((a * deBoor - b).norm(), 1e-12);
+
+  std::vector<Vec3> points;
+  for (const double value : y)
+  {
+    points.emplace_back(value, 0.0, 0.0);
+  }
+  const std::vector<double> knots(e.Knots.begin() + 3, e.Knots.begin() + 8);
+  const std::vector<SpaceKernel> kernels(e.Kernels.begin() + 3, e.Kernels.begin() + 7);
+  const auto spline = GeneralizedCubicSpline::interpolate(points, knots, false, kernels);
+  double largest = 0.0;
+  for (int k = 3; k <= 6; ++k)
+  {
+    for (int s = 0; s <= 10; ++s)
+    {
+      const double t = s / 10.0;
+      double fromBasis = 0.0;
+      for (int i = 0; i < unknowns; ++i)
+      {
+        fromBasis += deBoor(i) * BSpline(e, i, k, t)[0];
+      }
+      const double x = e.Knots[k] + t * (e.Knots[k + 1] - e.Knots[k]);
+      largest = std::max(largest, std::abs(spline.evaluateOnSpan(k - 3, x, 0)[0].x() - fromBasis));
+    }
+  }
+  EXPECT_LT(largest, 1e-12);
 }
 
 TEST(GeneralizedCubicSpline, PolynomialKindIsTheClassicalNaturalCubic)
