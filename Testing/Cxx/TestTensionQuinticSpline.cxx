@@ -1,0 +1,354 @@
+// Tensioned quintic parametric B-splines (paper 000): basis properties,
+// continuity, tension limit, the knot system (34) and interpolation.
+#include "TensionQuinticSpline.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+using namespace shapesplines;
+
+namespace
+{
+std::vector<double> randomKnots(std::mt19937& rng, int spans, double shortest = 0.2, double longest = 2.0)
+{
+  std::uniform_real_distribution<double> h(shortest, longest);
+  std::vector<double> t{ 0.0 };
+  for (int i = 0; i < spans; ++i)
+  {
+    t.push_back(t.back() + h(rng));
+  }
+  return t;
+}
+
+/// Random admissible shape parameters: gamma in (0.1,1.9) and lambda in (0.1,2) for C3,
+/// gamma in (0.1,1] for C4.
+QuinticParameters randomParameters(std::mt19937& rng, QuinticContinuity continuity, int knots)
+{
+  const bool c3 = continuity == QuinticContinuity::C3;
+  std::uniform_real_distribution<double> gamma(0.1, c3 ? 1.9 : 1.0), lambda(0.1, 2.0);
+  QuinticParameters p = QuinticParameters::uniform(continuity, knots);
+  for (int i = 0; i < knots; ++i)
+  {
+    p.Gamma[i] = gamma(rng);
+    p.Lambda[i] = lambda(rng);
+  }
+  return p;
+}
+
+std::vector<Vec3> randomPoints(std::mt19937& rng, int count)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Vec3> points(count);
+  for (Vec3& p : points)
+  {
+    p = Vec3(u(rng), u(rng), u(rng));
+  }
+  return points;
+}
+
+/// Basis function B^(k) (k from -2) of an open spline as the x component of a curve.
+TensionQuinticSpline basisFunction(const std::vector<double>& t, const std::vector<double>& xi,
+  const QuinticParameters& p, int k)
+{
+  std::vector<Vec3> points(xi.size(), Vec3::Zero());
+  points[k + 2] = Vec3(1.0, 0.0, 0.0);
+  return TensionQuinticSpline::fromControlPoints(t, xi, points, p, false);
+}
+
+/// Samples of a span in x (ends included).
+std::vector<double> spanSamples(const Curve& c, int span, int count)
+{
+  std::vector<double> x;
+  const double a = c.knots()[span], b = c.knots()[span + 1];
+  for (int j = 0; j <= count; ++j)
+  {
+    x.push_back(a + (b - a) * j / count);
+  }
+  return x;
+}
+
+/// Largest jump of derivative `order` over the interior knots (all knots when
+/// closed), relative to the largest value of that derivative at the knots.
+double relativeJump(const Curve& c, int order)
+{
+  double jump = 0.0, scale = 0.0;
+  const int spans = c.numberOfSpans();
+  for (int i = c.isClosed() ? 0 : 1; i < spans; ++i)
+  {
+    const int left = (i - 1 + spans) % spans;
+    const double x = c.knots()[i];
+    const double xLeft = i == 0 ? c.knots()[spans] : x;
+    const Derivatives a = c.evaluateOnSpan(left, xLeft, 4);
+    const Derivatives b = c.evaluateOnSpan(i, x, 4);
+    jump = std::max(jump, (a[order] - b[order]).norm());
+    scale = std::max({ scale, a[order].norm(), b[order].norm() });
+  }
+  return jump / scale;
+}
+
+class Family : public ::testing::TestWithParam<QuinticContinuity>
+{
+};
+} // namespace
+
+TEST_P(Family, BasisIsANonNegativePartitionOfUnityWithSixIntervalSupport)
+{
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const int spans = 10;
+    const auto t = randomKnots(rng, spans);
+    const auto p = randomParameters(rng, GetParam(), spans + 1);
+    const auto xi = TensionQuinticSpline::grevilleAbscissae(t, false);
+    std::vector<TensionQuinticSpline> basis;
+    for (int k = -2; k <= spans + 2; ++k)
+    {
+      basis.push_back(basisFunction(t, xi, p, k));
+    }
+    const std::vector<double>& x = basis.front().knots();
+    for (int span = 0; span < spans; ++span)
+    {
+      std::vector<double> largest(basis.size(), 0.0);
+      for (double at : spanSamples(basis.front(), span, 24))
+      {
+        double sum = 0.0;
+        for (size_t k = 0; k < basis.size(); ++k)
+        {
+          // Every basis function has the same X(t), hence the same knots.
+          ASSERT_EQ(basis[k].knots()[span], x[span]);
+          const double value = basis[k].evaluateOnSpan(span, at, 0)[0].x();
+          EXPECT_GE(value, -1e-14) << "trial " << trial << " k " << k - 2 << " x " << at;
+          sum += value;
+          largest[k] = std::max(largest[k], value);
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-13);
+      }
+      // B^(k) lives on the six spans k-3..k+2, that is on (x_{k-3}, x_{k+3}).
+      for (size_t k = 0; k < basis.size(); ++k)
+      {
+        const int index = static_cast<int>(k) - 2;
+        if (span >= index - 3 && span <= index + 2)
+        {
+          EXPECT_GT(largest[k], 1e-12) << "k " << index << " span " << span;
+        }
+        else
+        {
+          EXPECT_EQ(largest[k], 0.0) << "k " << index << " span " << span;
+        }
+      }
+    }
+  }
+}
+
+TEST_P(Family, JoinsWithTheClaimedContinuity)
+{
+  const bool c3 = GetParam() == QuinticContinuity::C3;
+  std::mt19937 rng(5);
+  double worst[5] = { 0, 0, 0, 0, 0 };
+  double smallestFourth = 1.0;
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    for (const bool closed : { false, true })
+    {
+      const int spans = 9;
+      const auto t = randomKnots(rng, spans);
+      const int knots = closed ? spans : spans + 1;
+      const auto p = randomParameters(rng, GetParam(), knots);
+      const auto xi = TensionQuinticSpline::grevilleAbscissae(t, closed);
+      const auto c = TensionQuinticSpline::fromControlPoints(
+        t, xi, randomPoints(rng, static_cast<int>(xi.size())), p, closed);
+      for (int order = 0; order < 5; ++order)
+      {
+        worst[order] = std::max(worst[order], relativeJump(c, order));
+      }
+      smallestFourth = std::min(smallestFourth, relativeJump(c, 4));
+    }
+  }
+  std::printf("%s relative jumps of derivatives 0..4: %.1e %.1e %.1e %.1e %.1e (4th at least %.1e)\n",
+    c3 ? "C3" : "C4", worst[0], worst[1], worst[2], worst[3], worst[4], smallestFourth);
+  for (int order = 0; order <= (c3 ? 3 : 4); ++order)
+  {
+    EXPECT_LT(worst[order], 1e-9) << "derivative " << order;
+  }
+  if (c3)
+  {
+    // Only C3: the fourth derivative jumps on every random curve.
+    EXPECT_GT(smallestFourth, 1e-3);
+  }
+}
+
+TEST_P(Family, TensionSendsTheCurveToItsControlPolygon)
+{
+  std::mt19937 rng(3);
+  const int spans = 8;
+  const auto t = randomKnots(rng, spans);
+  const auto xi = TensionQuinticSpline::grevilleAbscissae(t, false);
+  const auto points = randomPoints(rng, spans + 5);
+  // The polygon through (xi_k, P_k), as a function of x.
+  auto polygon = [&](double x) {
+    const size_t k = std::upper_bound(xi.begin(), xi.end(), x) - xi.begin();
+    const size_t j = std::clamp<size_t>(k, 1, xi.size() - 1);
+    const double w = (x - xi[j - 1]) / (xi[j] - xi[j - 1]);
+    return Vec3((1.0 - w) * points[j - 1] + w * points[j]);
+  };
+  double previous = HUGE_VAL;
+  for (double tension : { 0.1, 0.02, 0.004, 0.0008, 0.00016 })
+  {
+    const auto p = QuinticParameters::uniform(GetParam(), spans + 1, tension, tension);
+    const auto c = TensionQuinticSpline::fromControlPoints(t, xi, points, p, false);
+    double distance = 0.0;
+    for (int span = 0; span < spans; ++span)
+    {
+      for (double x : spanSamples(c, span, 40))
+      {
+        distance = std::max(distance, (c.evaluateOnSpan(span, x, 0)[0] - polygon(x)).norm());
+      }
+    }
+    std::printf("gamma = lambda = %g: distance to the control polygon %.2e\n", tension, distance);
+    EXPECT_LT(distance, previous);
+    previous = distance;
+  }
+  EXPECT_LT(previous, 0.005);
+}
+
+TEST_P(Family, KnotSystemPutsTheKnotsWhereAsked)
+{
+  std::mt19937 rng(17);
+  const bool c3 = GetParam() == QuinticContinuity::C3;
+  std::uniform_real_distribution<double> gamma(0.6, c3 ? 1.4 : 1.0), lambda(0.6, 1.4);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    for (const bool closed : { false, true })
+    {
+      // Neighbouring spans within a factor 3, parameters not far from 1.
+      const int spans = 12;
+      const auto t = randomKnots(rng, spans, 0.5, 1.5);
+      const int knots = closed ? spans : spans + 1;
+      auto p = QuinticParameters::uniform(GetParam(), knots);
+      for (int i = 0; i < knots; ++i)
+      {
+        p.Gamma[i] = gamma(rng);
+        p.Lambda[i] = lambda(rng);
+      }
+      const auto a = TensionQuinticSpline::solveAbscissae(t, p, closed);
+      EXPECT_EQ(a.Recoveries, 0);
+      EXPECT_TRUE(a.Increasing);
+      EXPECT_EQ(a.Parameters.Gamma, p.Gamma);
+      const auto c = TensionQuinticSpline::fromControlPoints(
+        t, a.Xi, randomPoints(rng, static_cast<int>(a.Xi.size())), a.Parameters, closed);
+      for (int i = 0; i <= spans; ++i)
+      {
+        EXPECT_NEAR(c.knots()[i], t[i], 1e-12 * t.back());
+      }
+    }
+  }
+}
+
+TEST(TensionQuinticSpline, KnotSystemRecoversFromANonIncreasingSolution)
+{
+  // Footnote 3: C4 tension next to a short span between long ones makes (34)
+  // give abscissae that are not increasing; the parameters there go towards 1.
+  const std::vector<double> t{ 0, 1, 2, 3, 5, 5.1, 7.1, 8.1, 9.1, 10.1 };
+  const double gamma = 0.7;
+  const auto p = QuinticParameters::uniform(QuinticContinuity::C4, 10, gamma);
+  const auto raw = TensionQuinticSpline::solveAbscissae(t, p, false, false);
+  EXPECT_FALSE(raw.Increasing);
+  EXPECT_EQ(raw.Recoveries, 0);
+  std::vector<Vec3> points(raw.Xi.size(), Vec3::Zero());
+  EXPECT_THROW(TensionQuinticSpline::fromControlPoints(t, raw.Xi, points, p, false),
+    std::invalid_argument);
+
+  const auto recovered = TensionQuinticSpline::solveAbscissae(t, p, false);
+  EXPECT_TRUE(recovered.Increasing);
+  EXPECT_GT(recovered.Recoveries, 0);
+  std::printf("footnote 3 case: %d recovery rounds, gamma", recovered.Recoveries);
+  int pulled = 0;
+  for (double g : recovered.Parameters.Gamma)
+  {
+    std::printf(" %.3f", g);
+    EXPECT_GE(g, gamma);
+    EXPECT_LE(g, 1.0);
+    pulled += g > gamma;
+  }
+  std::printf("\n");
+  EXPECT_GT(pulled, 0);
+  const auto c = TensionQuinticSpline::fromControlPoints(
+    t, recovered.Xi, points, recovered.Parameters, false);
+  for (size_t i = 0; i < t.size(); ++i)
+  {
+    EXPECT_NEAR(c.knots()[i], t[i], 1e-12 * t.back());
+  }
+}
+
+TEST_P(Family, InterpolatesOpenAndClosedSpacePoints)
+{
+  std::mt19937 rng(23);
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    for (const bool closed : { false, true })
+    {
+      for (const int spans : { 3, 4, 17 })
+      {
+        const auto t = randomKnots(rng, spans);
+        const int knots = closed ? spans : spans + 1;
+        const auto points = randomPoints(rng, knots);
+        const auto p = randomParameters(rng, GetParam(), knots);
+        const auto c = TensionQuinticSpline::interpolate(points, t, p, closed);
+        for (int i = 0; i < knots; ++i)
+        {
+          EXPECT_NEAR(c.knots()[i], t[i], 1e-12 * t.back());
+          EXPECT_LT((c.evaluate(t[i], 0)[0] - points[i]).norm(), 1e-10)
+            << "closed " << closed << " spans " << spans << " knot " << i;
+        }
+        if (closed)
+        {
+          EXPECT_LT(relativeJump(c, 3), 1e-9);
+        }
+      }
+    }
+  }
+}
+
+TEST_P(Family, ParametricFormHasTheSameGeometry)
+{
+  // s(x) = C(t(x)): the same curve, so the same curvature at every point.
+  std::mt19937 rng(29);
+  const int spans = 7;
+  const auto t = randomKnots(rng, spans);
+  const auto c = TensionQuinticSpline::interpolate(
+    randomPoints(rng, spans + 1), t, randomParameters(rng, GetParam(), spans + 1), false);
+  for (int span = 0; span < spans; ++span)
+  {
+    for (double tau : { 0.0, 0.3, 0.71, 1.0 })
+    {
+      const auto [x, cd] = c.parametricDerivatives(span, tau, 2);
+      const Derivatives s = c.evaluateOnSpan(span, x[0], 2);
+      EXPECT_LT((s[0] - cd[0]).norm(), 1e-12);
+      const double kappaC = cd[1].cross(cd[2]).norm() / std::pow(cd[1].norm(), 3);
+      const double kappaS = s[1].cross(s[2]).norm() / std::pow(s[1].norm(), 3);
+      EXPECT_NEAR(kappaS, kappaC, 1e-9 * kappaC);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(TensionQuintic, Family,
+  ::testing::Values(QuinticContinuity::C3, QuinticContinuity::C4),
+  [](const auto& info) { return info.param == QuinticContinuity::C3 ? "C3" : "C4"; });
+
+TEST(TensionQuinticSpline, RejectsParametersOutsideTheirRange)
+{
+  const std::vector<double> t{ 0, 1, 2, 3 };
+  const std::vector<Vec3> points{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1, 1, 1) };
+  for (auto [continuity, gamma, lambda] :
+    { std::make_tuple(QuinticContinuity::C4, 1.2, 1.0), std::make_tuple(QuinticContinuity::C4, 0.0, 1.0),
+      std::make_tuple(QuinticContinuity::C3, 2.0, 1.0), std::make_tuple(QuinticContinuity::C3, 1.0, 0.0) })
+  {
+    EXPECT_THROW(TensionQuinticSpline::interpolate(
+                   points, t, QuinticParameters::uniform(continuity, 4, gamma, lambda), false),
+      std::invalid_argument);
+  }
+}
