@@ -396,6 +396,35 @@ void QuinticParameters::check(int knots) const
   }
 }
 
+bool lowerQuinticTension(QuinticParameters& parameters, const std::vector<char>& failing,
+  bool closed, double floor)
+{
+  const int knots = static_cast<int>(parameters.Gamma.size());
+  const bool c3 = parameters.Continuity == QuinticContinuity::C3;
+  bool lowered = false;
+  auto lower = [&](double& value) {
+    if (value > floor)
+    {
+      value = std::max(floor, 0.5 * value);
+      lowered = true;
+    }
+  };
+  for (size_t span = 0; span < failing.size(); ++span)
+  {
+    if (!failing[span])
+    {
+      continue;
+    }
+    for (const size_t knot : { span, closed ? (span + 1) % knots : span + 1 })
+    {
+      // C3: lambda first (its limit alone straightens the span), then gamma.
+      const bool lambdaLeft = c3 && parameters.Lambda[knot] > floor;
+      lower(lambdaLeft ? parameters.Lambda[knot] : parameters.Gamma[knot]);
+    }
+  }
+  return lowered;
+}
+
 TensionQuinticSpline::TensionQuinticSpline(std::vector<double> knots, bool closed)
   : Curve(std::move(knots), closed)
 {
@@ -473,9 +502,9 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
 
 namespace
 {
-/// One solve of the knot system (34); xi empty if it is singular.
-std::vector<double> solveKnotSystem(const std::vector<double>& t, const Lookup& k,
-  const std::vector<SpanWeights>& weights, bool closed)
+/// One solve of the knot system (34) for the knots target; xi empty if it is singular.
+std::vector<double> solveKnotSystem(const std::vector<double>& t, const std::vector<double>& target,
+  const Lookup& k, const std::vector<SpanWeights>& weights, bool closed, double& condition)
 {
   const int n = k.spans();
   const int knots = closed ? n : n + 1;
@@ -487,7 +516,7 @@ std::vector<double> solveKnotSystem(const std::vector<double>& t, const Lookup& 
   {
     const auto [w, base] = knotRow(weights, i);
     addRow(a, i, w, base, n, closed);
-    rhs(i, 0) = t[i];
+    rhs(i, 0) = target[i];
     if (closed)
     {
       // The shifted abscissae of de Boor points one period away are constants.
@@ -511,7 +540,7 @@ std::vector<double> solveKnotSystem(const std::vector<double>& t, const Lookup& 
   }
   try
   {
-    const Eigen::MatrixX3d xi = solveSparse(unknowns, a, rhs);
+    const Eigen::MatrixX3d xi = solveSparse(unknowns, a, rhs, &condition);
     return std::vector<double>(xi.col(0).data(), xi.col(0).data() + unknowns);
   }
   catch (const std::runtime_error&)
@@ -528,20 +557,40 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
   const int knots = closed ? n : n + 1;
   parameters.check(knots);
   const double period = t.back() - t.front();
+  const std::vector<double> greville = grevilleAbscissae(t, closed);
   Abscissae result;
   result.Parameters = parameters;
+  // Per knot, how far the requested knot moves towards the knot that the
+  // Greville abscissae give (always increasing X): 0 is where asked.
+  std::vector<double> relax(knots, 0.0);
+  constexpr int RelaxRounds = 12;
   constexpr int MaxRecoveries = 64;
   for (;;)
   {
     if (result.Recoveries == MaxRecoveries)
     {
-      // Parameters all 1 give the Greville abscissae, always increasing.
+      // Parameters all 1 with the Greville abscissae give X(t) = t.
       std::fill(result.Parameters.Gamma.begin(), result.Parameters.Gamma.end(), 1.0);
       std::fill(result.Parameters.Lambda.begin(), result.Parameters.Lambda.end(), 1.0);
+      std::fill(relax.begin(), relax.end(), 1.0);
     }
     const Lookup k = lookup(t, result.Parameters, closed);
     const std::vector<SpanWeights> weights = spanWeights(k);
-    result.Xi = solveKnotSystem(t, k, weights, closed);
+    std::vector<double> target(knots);
+    for (int i = 0; i < knots; ++i)
+    {
+      double x = 0.0;
+      if (relax[i] > 0.0)
+      {
+        const auto [w, base] = knotRow(weights, i);
+        for (int m = 0; m < 6; ++m)
+        {
+          x += w[m] * abscissa(greville, base + m, n, closed, period);
+        }
+      }
+      target[i] = (1.0 - relax[i]) * t[i] + relax[i] * x;
+    }
+    result.Xi = solveKnotSystem(t, target, k, weights, closed, result.Condition);
     std::vector<int> bad;
     if (result.Xi.empty())
     {
@@ -555,29 +604,39 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
       bad = nonIncreasingSpans(weights, result.Xi, closed, period);
     }
     result.Increasing = bad.empty();
+    result.KnotsMoved = *std::max_element(relax.begin(), relax.end()) > 0.0;
     if (result.Increasing || !recover || result.Recoveries == MaxRecoveries)
     {
       return result;
     }
-    // Footnote 3: pull the parameters that shape a bad span halfway to 1.
+    // Footnote 3: move the requested knots around a bad span halfway towards
+    // the Greville knots, at most RelaxRounds times; then pull the parameters
+    // there halfway to 1 (the construction's weights may be negative).
     ++result.Recoveries;
-    std::vector<char> pull(knots, 0);
+    std::vector<char> near(knots, 0);
     for (int span : bad)
     {
-      for (int j = span - 2; j <= span + 3; ++j)
+      for (int j = span - 3; j <= span + 4; ++j)
       {
-        pull[k.knot(j) % knots] = 1;
+        near[k.knot(j) % knots] = 1;
       }
     }
+    const bool relaxed = result.Recoveries > RelaxRounds;
     for (int j = 0; j < knots; ++j)
     {
-      if (pull[j])
+      if (!near[j])
       {
-        result.Parameters.Gamma[j] = 0.5 * (1.0 + result.Parameters.Gamma[j]);
-        if (!result.Parameters.Lambda.empty())
-        {
-          result.Parameters.Lambda[j] = 0.5 * (1.0 + result.Parameters.Lambda[j]);
-        }
+        continue;
+      }
+      if (!relaxed)
+      {
+        relax[j] = result.Recoveries == RelaxRounds ? 1.0 : 0.5 * (1.0 + relax[j]);
+        continue;
+      }
+      result.Parameters.Gamma[j] = 0.5 * (1.0 + result.Parameters.Gamma[j]);
+      if (!result.Parameters.Lambda.empty())
+      {
+        result.Parameters.Lambda[j] = 0.5 * (1.0 + result.Parameters.Lambda[j]);
       }
     }
   }
@@ -610,9 +669,8 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
     const double period = 0.0;
     for (const bool start : { true, false })
     {
-      const SpanWeights& w = start ? weights.front() : weights.back();
       const int base = start ? -2 : n - 3;
-      const auto rows = endRows(w, start);
+      const auto rows = endRows(start ? weights.front() : weights.back(), start);
       double xd[2];
       for (int r = 0; r < 2; ++r)
       {
@@ -622,7 +680,17 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
           xd[r] += rows[r][m] * abscissa(abscissae.Xi, base + m, n, false, period);
         }
       }
-      const auto [first, second] = polynomialEndDerivatives(points, knots, start);
+      // Tension at the end knot blends s' towards the end chord and s'' towards 0,
+      // the derivatives of the limit polygon.
+      const int knot = start ? 0 : n;
+      const QuinticParameters& p = abscissae.Parameters;
+      const double w = std::min(
+        { 1.0, p.Gamma[knot], p.Continuity == QuinticContinuity::C3 ? p.Lambda[knot] : 1.0 });
+      const auto polynomial = polynomialEndDerivatives(points, knots, start);
+      const Vec3 chord = start ? Vec3((points[1] - points[0]) / (knots[1] - knots[0]))
+                               : Vec3((points[n] - points[n - 1]) / (knots[n] - knots[n - 1]));
+      const Vec3 first = w * polynomial.first + (1.0 - w) * chord;
+      const Vec3 second = w * polynomial.second;
       const int row = start ? count : count + 2;
       addRow(a, row, rows[0], base, n, false);
       rhs.row(row) = (first * xd[0]).transpose();
@@ -630,7 +698,8 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
       rhs.row(row + 1) = (second * xd[0] * xd[0] + first * xd[1]).transpose();
     }
   }
-  const Eigen::MatrixX3d solution = solveSparse(unknowns, a, rhs);
+  double condition = 1.0;
+  const Eigen::MatrixX3d solution = solveSparse(unknowns, a, rhs, &condition);
   std::vector<Vec3> deBoor(unknowns);
   for (int m = 0; m < unknowns; ++m)
   {
@@ -639,6 +708,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   TensionQuinticSpline spline =
     fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
   spline.Recoveries = abscissae.Recoveries;
+  spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
 }
 
@@ -650,41 +720,150 @@ std::pair<std::array<double, 5>, Derivatives> TensionQuinticSpline::parametricDe
   return { x, c };
 }
 
-Derivatives TensionQuinticSpline::evaluateOnSpan(int span, double x, int order) const
+double TensionQuinticSpline::localParameter(int span, double x) const
 {
   const std::array<double, 6>& xb = this->XBezier[span];
   // X is a strictly increasing quintic on [0,1]: safeguarded Newton.
-  double u = 0.0;
   if (x >= xb[5])
   {
-    u = 1.0;
+    return 1.0;
   }
-  else if (x > xb[0])
+  if (x <= xb[0])
   {
-    double lo = 0.0, hi = 1.0;
-    u = (x - xb[0]) / (xb[5] - xb[0]);
-    for (int iteration = 0; iteration < 200; ++iteration)
+    return 0.0;
+  }
+  double lo = 0.0, hi = 1.0;
+  double u = (x - xb[0]) / (xb[5] - xb[0]);
+  for (int iteration = 0; iteration < 200; ++iteration)
+  {
+    const auto d = bezierDerivatives(xb, u, 1, 0.0);
+    const double f = d[0] - x;
+    if (f == 0.0)
     {
-      const auto d = bezierDerivatives(xb, u, 1, 0.0);
-      const double f = d[0] - x;
-      if (f == 0.0)
-      {
-        break;
-      }
-      (f < 0.0 ? lo : hi) = u;
-      double next = u - f / d[1];
-      if (!(next > lo && next < hi))
-      {
-        next = 0.5 * (lo + hi);
-      }
-      const bool converged = std::abs(next - u) <= 2e-16;
-      u = next;
-      if (converged || hi - lo <= 2e-16)
-      {
-        break;
-      }
+      break;
+    }
+    (f < 0.0 ? lo : hi) = u;
+    double next = u - f / d[1];
+    if (!(next > lo && next < hi))
+    {
+      next = 0.5 * (lo + hi);
+    }
+    const bool converged = std::abs(next - u) <= 2e-16;
+    u = next;
+    if (converged || hi - lo <= 2e-16)
+    {
+      break;
     }
   }
+  return u;
+}
+
+TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots,
+  const QuinticParameters& parameters)
+{
+  const int n = static_cast<int>(knots.size()) - 1;
+  if (n < 1 || points.size() != u.size() || static_cast<int>(points.size()) < n + 5)
+  {
+    throw std::invalid_argument("tension quintic spline: too few points to approximate");
+  }
+  const Abscissae abscissae = solveAbscissae(knots, parameters, false);
+  const std::vector<SpanWeights> weights =
+    spanWeights(lookup(knots, abscissae.Parameters, false));
+  // The same X with any de Boor points: it maps the data parameters to spans and t.
+  const TensionQuinticSpline shape = fromControlPoints(
+    knots, abscissae.Xi, std::vector<Vec3>(n + 5, Vec3::Zero()), abscissae.Parameters, false);
+  const int unknowns = n + 5;
+  Triplets normal;
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    const int span = shape.findSpan(u[j]);
+    const double tau = shape.localParameter(span, u[j]);
+    Eigen::Matrix<double, 1, 6> bernstein;
+    for (int b = 0; b < 6; ++b)
+    {
+      static const double binomial[6] = { 1, 5, 10, 10, 5, 1 };
+      bernstein[b] = binomial[b] * std::pow(tau, b) * std::pow(1.0 - tau, 5 - b);
+    }
+    const Eigen::Matrix<double, 1, 6> row = bernstein * weights[span];
+    for (int a = 0; a < 6; ++a)
+    {
+      for (int b = 0; b < 6; ++b)
+      {
+        normal.emplace_back(span + a, span + b, row[a] * row[b]);
+      }
+      rhs.row(span + a) += row[a] * points[j].transpose();
+    }
+  }
+  double condition = 1.0;
+  const Eigen::MatrixX3d solution = solveSparse(unknowns, normal, rhs, &condition);
+  std::vector<Vec3> deBoor(unknowns);
+  for (int m = 0; m < unknowns; ++m)
+  {
+    deBoor[m] = solution.row(m).transpose();
+  }
+  TensionQuinticSpline spline =
+    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, false);
+  spline.Recoveries = abscissae.Recoveries;
+  spline.ConditionEstimate = std::max(condition, abscissae.Condition);
+  return spline;
+}
+
+std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots)
+{
+  const int k = static_cast<int>(knots.size());
+  Triplets normal;
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(k, 3);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    const int span = std::clamp(
+      static_cast<int>(std::upper_bound(knots.begin(), knots.end(), u[j]) - knots.begin()) - 1, 0,
+      k - 2);
+    const double w = (u[j] - knots[span]) / (knots[span + 1] - knots[span]);
+    const double hat[2] = { 1.0 - w, w };
+    for (int a = 0; a < 2; ++a)
+    {
+      for (int b = 0; b < 2; ++b)
+      {
+        normal.emplace_back(span + a, span + b, hat[a] * hat[b]);
+      }
+      rhs.row(span + a) += hat[a] * points[j].transpose();
+    }
+  }
+  const Eigen::MatrixX3d solution = solveSparse(k, normal, rhs);
+  std::vector<Vec3> vertices(k);
+  for (int i = 0; i < k; ++i)
+  {
+    vertices[i] = solution.row(i).transpose();
+  }
+  return vertices;
+}
+
+std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const
+{
+  const int spans = this->numberOfSpans();
+  const int knots = static_cast<int>(this->Parameters.Gamma.size());
+  auto perSpan = [&](const std::vector<double>& perKnot, const char* name) {
+    SpanParameter p{ name, std::vector<double>(spans), false };
+    for (int j = 0; j < spans; ++j)
+    {
+      p.Values[j] = std::min(perKnot[j], perKnot[(j + 1) % knots]);
+    }
+    return p;
+  };
+  std::vector<SpanParameter> out{ perSpan(this->Parameters.Gamma, "Gamma") };
+  if (this->Parameters.Continuity == QuinticContinuity::C3)
+  {
+    out.push_back(perSpan(this->Parameters.Lambda, "Lambda"));
+  }
+  return out;
+}
+
+Derivatives TensionQuinticSpline::evaluateOnSpan(int span, double x, int order) const
+{
+  const double u = this->localParameter(span, x);
   const auto [xd, cd] = this->parametricDerivatives(span, u, order);
   // Y(u) = s(X(u)) differentiated by Faa di Bruno, solved for the x-derivatives of s.
   Derivatives s;

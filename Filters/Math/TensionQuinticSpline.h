@@ -30,6 +30,18 @@ struct QuinticParameters
   void check(int knots) const;
 };
 
+/// Smallest gamma (and lambda) the automatic mode goes down to.
+constexpr double QuinticTensionFloor = 1e-6;
+
+/**
+ * The automatic mode's step: halves gamma (C4), or lambda and once it is at
+ * the floor gamma (C3), at both knots of every failing span (failing[j] != 0
+ * for span j), not below floor. Returns false when nothing could be lowered
+ * any more.
+ */
+bool lowerQuinticTension(QuinticParameters& parameters, const std::vector<char>& failing,
+  bool closed, double floor = QuinticTensionFloor);
+
 /**
  * A space curve s(x) = C(t(x)) built from the tensioned quintic B-splines:
  * C(t) = (X(t), sum_k P_k Y^(k)(t)) is piecewise quintic in t with Bezier
@@ -59,20 +71,24 @@ public:
   struct Abscissae
   {
     std::vector<double> Xi;
-    /// The parameters used: those given, or pulled towards 1 where (34) gave
-    /// a non-increasing X (footnote 3).
+    /// The parameters used: those given, or pulled towards 1 where moving
+    /// the knots did not give an increasing X.
     QuinticParameters Parameters;
-    int Recoveries = 0; ///< rounds of pulling parameters towards 1
+    int Recoveries = 0;      ///< rounds of footnote-3 recovery
+    bool KnotsMoved = false; ///< some knots are not where they were asked to be
     bool Increasing = false; ///< X' > 0 on every span (false only without recovery)
+    double Condition = 1.0;  ///< condition estimate of the last knot system solved
   };
 
   /**
    * The knot system (34): abscissae xi such that X(t_i) = t_i at every knot
    * (open curves keep xi_{-2}, xi_{-1}, xi_{n+1}, xi_{n+2} at their Greville
-   * values, so that gamma = lambda = 1 gives X(t) = t). Where the result is not strictly increasing
-   * (footnote 3), the parameters of the knots around it are pulled halfway to
-   * 1 and the system solved again (unless recover is false); after 64 rounds
-   * all parameters are 1 (the Greville abscissae).
+   * values, so that gamma = lambda = 1 gives X(t) = t). Where X is not
+   * strictly increasing (footnote 3) and recover is true, the requested knots
+   * near the bad spans move halfway towards those of the Greville abscissae
+   * (which are increasing for any parameters), up to 12 times, the last time
+   * all the way; if that fails too the parameters there are pulled halfway to
+   * 1; after 64 rounds all parameters are 1 and X(t) = t.
    */
   static Abscissae solveAbscissae(const std::vector<double>& t,
     const QuinticParameters& parameters, bool closed, bool recover = true);
@@ -81,12 +97,26 @@ public:
    * Interpolates points (open: n + 1 >= 3 points; closed: n >= 3, knots with
    * the closing one) with knots x_i = knots[i] via (34). Open curves take
    * s' and s'' at each end from the polynomial through the six (or fewer)
-   * end points.
+   * end points, blended by w = min(1, gamma, lambda) of the end knot towards
+   * the limit polygon's: s' = w p' + (1 - w) chord slope, s'' = w p''.
    */
   static TensionQuinticSpline interpolate(const std::vector<Vec3>& points,
     const std::vector<double>& knots, const QuinticParameters& parameters, bool closed);
 
+  /**
+   * The open spline with knots x_i = knots[i] (via (34)) closest in least
+   * squares to points at parameters u: sum_j |s(u_j) - points_j|^2 minimal
+   * (the normal equations are banded). Needs enough points on every span.
+   */
+  static TensionQuinticSpline approximate(const std::vector<Vec3>& points,
+    const std::vector<double>& u, const std::vector<double>& knots,
+    const QuinticParameters& parameters);
+
   Derivatives evaluateOnSpan(int span, double x, int order) const override;
+
+  /// "Gamma" per span (the smaller of its two knots', cell summary MinGamma),
+  /// and for C3 "Lambda" likewise.
+  std::vector<SpanParameter> spanParameters() const override;
 
   /// Derivatives of the parametric form C(t) = (X(t), Y(t)) on a span, t local in [0,1].
   std::pair<std::array<double, 5>, Derivatives> parametricDerivatives(
@@ -99,6 +129,8 @@ public:
 
 private:
   TensionQuinticSpline(std::vector<double> knots, bool closed);
+  /// The local parameter on span where X = x (clamped to [0,1]).
+  double localParameter(int span, double x) const;
 
   QuinticParameters Parameters;
   std::vector<double> Xi;
@@ -108,6 +140,12 @@ private:
   std::vector<std::array<double, 6>> XBezier;
   std::vector<std::array<Vec3, 6>> CBezier;
 };
+/**
+ * L*: the piecewise linear curve with vertices at knots closest in least
+ * squares to points at parameters u (knots[0] <= u <= knots.back()).
+ */
+std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots);
 } // namespace shapesplines
 
 #endif
