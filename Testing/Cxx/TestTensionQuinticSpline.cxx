@@ -567,3 +567,37 @@ TEST(TensionQuinticSpline, ApproximationKeepsTheTorsionSignsOfTheLeastSquaresPol
     EXPECT_LT(worst, 0.2);
   }
 }
+
+TEST(TensionQuinticSpline, AutomaticModeRepairsClosedLines)
+{
+  // A rectangle with straight runs, and a coarse trefoil knot: closed lines.
+  std::vector<Vec3> trefoil;
+  for (int i = 0; i < 14; ++i)
+  {
+    const double t = 2.0 * test::Pi * i / 14;
+    trefoil.emplace_back(
+      std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t), -std::sin(3.0 * t));
+  }
+  const std::vector<Vec3> rectangle{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0),
+    Vec3(3, 1, 0), Vec3(3, 2, 0), Vec3(2, 2, 0), Vec3(0.5, 2, 0), Vec3(0, 1, 0) };
+  for (const auto& points : { rectangle, trefoil })
+  {
+    for (const auto continuity : { QuinticContinuity::C3, QuinticContinuity::C4 })
+    {
+      FitOptions options;
+      options.Closed = true;
+      QuinticFitOptions quintic;
+      quintic.Continuity = continuity;
+      quintic.Automatic = false;
+      const FittedPolyline plain = fitPolyline(points, options, tensionQuinticBuilder(quintic));
+      quintic.Automatic = true;
+      const FittedPolyline automatic = fitPolyline(points, options, tensionQuinticBuilder(quintic));
+      std::printf("closed, %zu points, %s: violations plain %d, automatic %d\n", points.size(),
+        continuity == QuinticContinuity::C3 ? "C3" : "C4", plain.Audit.violations(),
+        automatic.Audit.violations());
+      ASSERT_TRUE(automatic.Spline->isClosed());
+      EXPECT_GT(plain.Audit.violations(), 0);
+      EXPECT_EQ(automatic.Audit.violations(), 0);
+    }
+  }
+}
