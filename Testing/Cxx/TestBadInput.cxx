@@ -10,6 +10,7 @@
 #include "vtkFloatArray.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkShapeSplineFilter.h"
+#include "vtkTensionQuinticSplineFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -25,6 +26,12 @@ struct SplineFilter
 
 std::vector<SplineFilter> Filters()
 {
+  // Interpolation only: rows check that the curve passes through the data.
+  auto quintic = [](int continuity) {
+    auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+    filter->SetContinuity(continuity);
+    return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+  };
   return { { "Cubic", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
                              vtkSmartPointer<vtkCubicSplineFilter>::New()); } },
     { "GeneralizedCubic", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
@@ -34,7 +41,9 @@ std::vector<SplineFilter> Filters()
        filter->SetSpaceKindToVariableDegree();
        filter->SetTension(3.0);
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } } };
+     } },
+    { "TensionQuinticC4", [=] { return quintic(vtkTensionQuinticSplineFilter::C4); } },
+    { "TensionQuinticC3", [=] { return quintic(vtkTensionQuinticSplineFilter::C3); } } };
 }
 
 /// A curved, non-planar line (part of a conical helix), scaled and moved.

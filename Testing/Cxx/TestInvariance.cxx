@@ -3,6 +3,7 @@
 // spline family joins by adding its builder to Families below.
 #include "GeneralizedCubicSpline.h"
 #include "MathTestUtilities.h"
+#include "TensionQuinticFit.h"
 
 #include <gtest/gtest.h>
 
@@ -31,6 +32,18 @@ CurveBuilder generalizedCubic(SpaceKind kind, double tension)
   return generalizedCubicBuilder(options);
 }
 
+/// Fixed tension: the automatic mode drives this kinked data to gamma ~ 1e-6,
+/// where curvature spikes of 1e6 carry only about 1e-9 relative precision.
+CurveBuilder quinticBuilder(QuinticContinuity continuity, double gamma, double lambda)
+{
+  QuinticFitOptions quintic;
+  quintic.Continuity = continuity;
+  quintic.Automatic = false;
+  quintic.Gamma = gamma;
+  quintic.Lambda = lambda;
+  return tensionQuinticBuilder(quintic);
+}
+
 std::vector<Family> Families()
 {
   return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
@@ -40,7 +53,11 @@ std::vector<Family> Families()
     { "GeneralizedExponentialAutomatic", generalizedCubicBuilder({}), false },
     { "GeneralizedExponentialClosed", generalizedCubicBuilder({}), true },
     { "GeneralizedTrigonometricFixed", generalizedCubic(SpaceKind::Trigonometric, 2.0), false },
-    { "GeneralizedVariableDegreeFixed", generalizedCubic(SpaceKind::VariableDegree, 7.0), false } };
+    { "GeneralizedVariableDegreeFixed", generalizedCubic(SpaceKind::VariableDegree, 7.0), false },
+    { "TensionQuinticC4", quinticBuilder(QuinticContinuity::C4, 0.4, 1.0), false },
+    { "TensionQuinticC3", quinticBuilder(QuinticContinuity::C3, 1.3, 0.3), false },
+    { "TensionQuinticC4Closed", quinticBuilder(QuinticContinuity::C4, 0.4, 1.0), true },
+    { "TensionQuinticC3Closed", quinticBuilder(QuinticContinuity::C3, 0.5, 0.5), true } };
 }
 
 /// Uneven, non-planar data: a conical helix with a kink.

@@ -1,0 +1,105 @@
+#include "TensionQuinticFit.h"
+
+#include <algorithm>
+
+namespace shapesplines
+{
+namespace
+{
+std::vector<char> failingSpans(const ShapeAudit& audit, unsigned criteria)
+{
+  std::vector<char> failing(audit.SpanMask.size());
+  for (size_t j = 0; j < failing.size(); ++j)
+  {
+    failing[j] = (audit.SpanMask[j] & criteria) != 0;
+  }
+  return failing;
+}
+
+BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quintic)
+{
+  const CleanPolyline& data = context.Data;
+  const int count = static_cast<int>(data.Points.size());
+  QuinticParameters parameters =
+    QuinticParameters::uniform(quintic.Continuity, count, quintic.Gamma, quintic.Lambda);
+  auto build = [&]() -> std::unique_ptr<Curve> {
+    auto spline = std::make_unique<TensionQuinticSpline>(
+      TensionQuinticSpline::interpolate(data.Points, context.Knots, parameters, data.Closed));
+    // Lower from the parameters used: (34) may have pulled some towards 1.
+    parameters = spline->parameters();
+    return spline;
+  };
+  BuiltCurve built;
+  if (!quintic.Automatic)
+  {
+    built.Spline = build();
+    return built;
+  }
+  ShapeAudit audit;
+  built.Spline = preserveShape(
+    context, data, build,
+    [&](const std::vector<char>& failing) {
+      return lowerQuinticTension(parameters, failing, data.Closed, quintic.Floor);
+    },
+    quintic.MaxRounds, &audit);
+  built.Audit = std::move(audit);
+  return built;
+}
+} // namespace
+
+QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
+  const std::vector<double>& u, int numberOfKnots, const QuinticFitOptions& quintic,
+  const FitOptions& fit, double coordinateNoise)
+{
+  QuinticApproximation result;
+  for (int i = 0; i < numberOfKnots; ++i)
+  {
+    result.Knots.push_back(u.front() + (u.back() - u.front()) * i / (numberOfKnots - 1));
+  }
+  result.Knots.back() = u.back();
+  result.Polygon = leastSquaresPolygon(points, u, result.Knots);
+  CleanPolyline reference;
+  reference.Points = result.Polygon;
+  const DiscreteShape shape = discreteShape(reference, fit.Tolerances);
+  constexpr unsigned torsion = (1u << static_cast<int>(ShapeCriterion::TorsionSignAtKnot)) |
+    (1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan));
+  QuinticParameters parameters =
+    QuinticParameters::uniform(quintic.Continuity, numberOfKnots, quintic.Gamma, quintic.Lambda);
+  for (int round = 0;; ++round)
+  {
+    result.Spline = std::make_unique<TensionQuinticSpline>(
+      TensionQuinticSpline::approximate(points, u, result.Knots, parameters));
+    const ShapeAudit audit = auditCurve(
+      *result.Spline, reference, shape, fit.Tolerances, fit.AuditSubdivisions, coordinateNoise);
+    result.TorsionSignViolations =
+      audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignAtKnot)] +
+      audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignOnSpan)];
+    parameters = result.Spline->parameters();
+    if (!quintic.Automatic || result.TorsionSignViolations == 0 || round == quintic.MaxRounds ||
+      !lowerQuinticTension(parameters, failingSpans(audit, torsion), false, quintic.Floor))
+    {
+      return result;
+    }
+  }
+}
+
+CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
+{
+  return [quintic](const FitContext& context) {
+    const int count = static_cast<int>(context.Data.Points.size());
+    const int knots = std::min(quintic.ApproximationKnots, count - 4);
+    if (quintic.ApproximationKnots == 0 || context.Data.Closed || knots < 2)
+    {
+      return interpolate(context, quintic);
+    }
+    QuinticApproximation approximation = approximateKeepingTorsionSigns(context.Data.Points,
+      context.Knots, knots, quintic, context.Options, context.CoordinateNoise);
+    BuiltCurve built;
+    built.Spline = std::move(approximation.Spline);
+    CleanPolyline reference;
+    reference.Points = std::move(approximation.Polygon);
+    built.ShapeReference = std::move(reference);
+    return built;
+  };
+}
+} // namespace shapesplines

@@ -1,0 +1,51 @@
+// ShapeSplines math core: fitting polylines with tensioned quintic B-splines,
+// fixed or automatic shape parameters, interpolation or least squares.
+#ifndef shapesplines_TensionQuinticFit_h
+#define shapesplines_TensionQuinticFit_h
+
+#include "FitPolyline.h"
+#include "TensionQuinticSpline.h"
+
+namespace shapesplines
+{
+struct QuinticFitOptions
+{
+  QuinticContinuity Continuity = QuinticContinuity::C4;
+  /// Lower the tension only on spans that fail the shape audit, starting
+  /// from 1 (lowerQuinticTension); otherwise Gamma and Lambda at every knot.
+  bool Automatic = true;
+  double Gamma = 1.0;
+  double Lambda = 1.0;
+  double Floor = QuinticTensionFloor;
+  int MaxRounds = 64;
+  /// 0: interpolate. Otherwise approximate an open line in least squares with
+  /// this many knots (at least 2; at most points - 4, fewer points interpolate),
+  /// keeping the torsion signs of L* (approximateKeepingTorsionSigns).
+  int ApproximationKnots = 0;
+};
+
+/// The family's builder for fitPolyline and the filter.
+CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic);
+
+/// A least-squares approximation and the polygon whose torsion signs it keeps.
+struct QuinticApproximation
+{
+  std::unique_ptr<TensionQuinticSpline> Spline;
+  std::vector<double> Knots;  ///< placed uniformly in the data parameter
+  std::vector<Vec3> Polygon;  ///< L*, one vertex per knot
+  int TorsionSignViolations = 0; ///< of the spline against L* (criteria iv.1, iv.2)
+};
+
+/**
+ * Paper 000, section 5: the spline with numberOfKnots knots (>= 2, uniform in
+ * the data parameters u) closest in least squares to the points, whose torsion
+ * keeps the sign of the discrete torsion of L*, the least-squares polygon on
+ * the same knots. Automatic: the tension starts at 1 and is lowered
+ * (lowerQuinticTension) on spans where the sign is wrong.
+ */
+QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
+  const std::vector<double>& u, int numberOfKnots, const QuinticFitOptions& quintic,
+  const FitOptions& fit, double coordinateNoise = 0.0);
+} // namespace shapesplines
+
+#endif

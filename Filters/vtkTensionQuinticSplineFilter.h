@@ -1,0 +1,145 @@
+/**
+ * @class   vtkTensionQuinticSplineFilter
+ * @brief   C3 or C4 tensioned quintic parametric B-spline through each
+ *          polyline, with shape parameters chosen automatically where the
+ *          shape of the data asks for them
+ *
+ * The spline of Cravero, Manni and Sampoli (paper 000): quintic B-spline-like
+ * functions with six-interval support built by a geometric construction of
+ * their Bezier points. Continuity C4 (default) has one tension parameter gamma
+ * in (0,1] per knot; C3 has gamma in (0,2) and lambda > 0 per knot. With all
+ * parameters 1 both are the classical quintic interpolating spline; as they
+ * go to 0 the curve goes to the polyline through the points. The knots
+ * (Parameterization) stay where they are for any parameters (knot system (34)
+ * of the paper).
+ *
+ * In Automatic mode (default) every knot starts at gamma = lambda = 1 and
+ * the parameters of the two knots of every span that breaks the shape of the
+ * data (paper 001, Definition 1: collinearity, convexity, coplanarity,
+ * torsion sign) are halved until no span breaks it or they reach 1e-6.
+ * Otherwise Gamma and Lambda are used at every knot (C4 uses min(Gamma, 1)).
+ * The point arrays Gamma (and Lambda for C3) and the cell arrays MinGamma
+ * (and MinLambda) report the parameters used, per span the smaller of its
+ * two knots'.
+ *
+ * Mode APPROXIMATE (open lines with at least six points; others are
+ * interpolated) fits the spline with NumberOfKnots knots, uniform in the
+ * parameterization, in least squares (paper 000, section 5); its shape
+ * reference is L*, the least-squares polygon on the same knots, and the
+ * automatic mode keeps the sign of L*'s discrete torsion on every span.
+ * ShapeViolations then counts every Definition 1 criterion against L*.
+ * Everything else (sampling, arrays, bad input) is described in
+ * vtkShapeSplineFilter.
+ *
+ * @sa vtkShapeSplineFilter vtkCubicSplineFilter vtkPolylineShapeAnalysis
+ */
+#ifndef vtkTensionQuinticSplineFilter_h
+#define vtkTensionQuinticSplineFilter_h
+
+#include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkShapeSplineFilter.h"
+
+class SHAPESPLINESFILTERS_EXPORT vtkTensionQuinticSplineFilter : public vtkShapeSplineFilter
+{
+public:
+  static vtkTensionQuinticSplineFilter* New();
+  vtkTypeMacro(vtkTensionQuinticSplineFilter, vtkShapeSplineFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ContinuityType
+  {
+    C3 = 0,
+    C4 = 1
+  };
+
+  enum ModeType
+  {
+    INTERPOLATE = 0,
+    APPROXIMATE = 1
+  };
+
+  ///@{
+  /**
+   * C4 (default: one parameter gamma per knot) or C3 (gamma and lambda per
+   * knot, more freedom, fourth derivative jumps at the knots).
+   */
+  vtkSetClampMacro(Continuity, int, C3, C4);
+  vtkGetMacro(Continuity, int);
+  void SetContinuityToC3() { this->SetContinuity(C3); }
+  void SetContinuityToC4() { this->SetContinuity(C4); }
+  const char* GetContinuityAsString();
+  ///@}
+
+  ///@{
+  /**
+   * INTERPOLATE (default): through every point. APPROXIMATE: least squares
+   * with NumberOfKnots knots.
+   */
+  vtkSetClampMacro(Mode, int, INTERPOLATE, APPROXIMATE);
+  vtkGetMacro(Mode, int);
+  void SetModeToInterpolate() { this->SetMode(INTERPOLATE); }
+  void SetModeToApproximate() { this->SetMode(APPROXIMATE); }
+  const char* GetModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Knots of the approximation (default 9, at least 2); a line with fewer
+   * than NumberOfKnots + 4 points gets fewer knots.
+   */
+  vtkSetClampMacro(NumberOfKnots, int, 2, 1000000);
+  vtkGetMacro(NumberOfKnots, int);
+  ///@}
+
+  ///@{
+  /**
+   * Choose the shape parameters per knot, only where the shape audit fails
+   * (default on); off: use Gamma and Lambda everywhere.
+   */
+  vtkSetMacro(Automatic, bool);
+  vtkGetMacro(Automatic, bool);
+  vtkBooleanMacro(Automatic, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Tension gamma at every knot when Automatic is off (default 1, the
+   * classical quintic spline; smaller is tighter). C3 takes it in
+   * [1e-6, 1.999], C4 in [1e-6, 1] (larger values count as 1, with a warning).
+   */
+  vtkSetClampMacro(Gamma, double, 1e-6, 1.999);
+  vtkGetMacro(Gamma, double);
+  ///@}
+
+  ///@{
+  /**
+   * Tension lambda of the C3 continuity at every knot when Automatic is off
+   * (default 1; smaller is tighter), in [1e-6, 1e6].
+   */
+  vtkSetClampMacro(Lambda, double, 1e-6, 1e6);
+  vtkGetMacro(Lambda, double);
+  ///@}
+
+protected:
+  vtkTensionQuinticSplineFilter();
+  ~vtkTensionQuinticSplineFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+#ifndef __VTK_WRAP__
+  shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
+#endif
+
+  int Continuity = C4;
+  int Mode = INTERPOLATE;
+  int NumberOfKnots = 9;
+  bool Automatic = true;
+  double Gamma = 1.0;
+  double Lambda = 1.0;
+
+private:
+  vtkTensionQuinticSplineFilter(const vtkTensionQuinticSplineFilter&) = delete;
+  void operator=(const vtkTensionQuinticSplineFilter&) = delete;
+};
+
+#endif
