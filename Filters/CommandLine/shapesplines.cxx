@@ -5,6 +5,7 @@
 #include "vtkCubicSplineFilter.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
+#include "vtkTensionQuinticSplineFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -70,13 +71,18 @@ Options of fit:
   --family NAME          spline family (default cubic):
                            cubic     classical C2 cubic spline (the baseline)
                            gencubic  C2 generalized cubic, automatic tension
+                           quintic   C3/C4 tensioned quintic, automatic tension
   --end-condition NAME   cubic: not-a-knot (default), natural or clamped
   --kind NAME            gencubic: exponential (default), trigonometric,
                          variable-degree or polynomial
   --tension T            gencubic: starting tension (fixed with --fixed);
                          the degree for variable-degree (default 0)
   --max-tension T        gencubic: cap of the automatic tension (default 1000)
-  --fixed                gencubic: no automatic tension, every span gets T
+  --fixed                gencubic, quintic: no automatic tension
+  --continuity C         quintic: c4 (default) or c3
+  --mode M               quintic: interpolate (default) or approximate
+  --knots N              quintic, approximate: number of knots (default 10)
+  --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1)
   --parameterization P   chord (default), centripetal or uniform knots
   --closed               close every line of 3 or more distinct points
   --samples N            N samples per span between data points (default 10)
@@ -169,7 +175,7 @@ struct Arguments
 };
 
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
-  "tension", "max-tension", "parameterization", "samples", "arc-length", "data-tolerance",
+  "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "parameterization", "samples", "arc-length", "data-tolerance",
   "curve-tolerance" };
 const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "quiet", "help" };
 
@@ -636,6 +642,28 @@ std::map<std::string, FamilyFactory> Families()
        filter->SetAutomaticTension(!args.Flag("fixed"));
        filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
        filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } },
+    { "quintic", [](Arguments& args) {
+       auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+       const std::string continuity = args.Value("continuity", "c4");
+       if (continuity != "c3" && continuity != "c4")
+       {
+         throw UsageError("--continuity must be c3 or c4");
+       }
+       filter->SetContinuity(continuity == "c3" ? vtkTensionQuinticSplineFilter::C3
+                                                : vtkTensionQuinticSplineFilter::C4);
+       const std::string mode = args.Value("mode", "interpolate");
+       if (mode != "interpolate" && mode != "approximate")
+       {
+         throw UsageError("--mode must be interpolate or approximate");
+       }
+       filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
+                                             : vtkTensionQuinticSplineFilter::INTERPOLATE);
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 10, 2, 1e6)));
+       filter->SetAutomatic(!args.Flag("fixed"));
+       filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
+       filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } } };
 }

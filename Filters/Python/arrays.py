@@ -24,7 +24,8 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import shapesplines
 
-FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter"}
+FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter",
+            "quintic": "vtkTensionQuinticSplineFilter"}
 
 _POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
                  "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",

@@ -82,7 +82,8 @@ def helix(per_turn, turns, a=2.0, b=1.0):
 
 # ---------------------------------------------------------------------------- help
 code, out, err = run("--help")
-options = ["--family", "--end-condition", "--kind", "--tension", "--max-tension", "--fixed", "--parameterization", "--closed", "--samples", "--arc-length",
+options = ["--family", "--end-condition", "--kind", "--tension", "--max-tension", "--fixed", "--continuity",
+           "--mode", "--knots", "--gamma", "--lambda", "--parameterization", "--closed", "--samples", "--arc-length",
            "--vmtk-names", "--data-tolerance", "--curve-tolerance", "--output", "--quiet", "--help"]
 missing = [o for o in options if o not in out]
 check(code == 0 and "fit INPUT" in out and "audit INPUT" in out and not missing,
@@ -141,6 +142,12 @@ check(code == 0 and "shape violations 0" in out and "shape violations 0" not in 
       "--family gencubic keeps Akima's shape where the cubic does not; Tension written",
       "%s | %s" % (out.strip().splitlines()[0], out2.strip().splitlines()[0]))
 
+code, out, err = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-quintic.csv"),
+                     "--family", "quintic", "--continuity", "c4")
+quintic = read_csv(temp("akima-quintic.csv"))
+check(code == 0 and "shape violations 0" in out and 0 < quintic["Gamma"].min() <= 1,
+      "--family quintic keeps Akima's shape; Gamma written", out.strip().splitlines()[0] if out.strip() else err)
+
 # ---------------------------------------------------------------------------- audit
 code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
 rows = [l for l in out.splitlines() if l.startswith("line ")]
@@ -164,6 +171,9 @@ cases = [
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "gencubic", "--kind", "spline"), 1, "--kind must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "gencubic", "--tension", "-1"), 1, "--tension must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--kind", "exponential"), 1, "unknown option --kind for this"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "quintic", "--continuity", "c5"), 1,
+     "--continuity must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "quintic", "--gamma", "3"), 1, "--gamma must be"),
     (("fit", temp("two.csv")), 1, "needs -o"),
     (("fit", temp("two.csv"), "-o"), 1, "needs a value"),
     (("audit",), 1, "audit takes INPUT"),

@@ -41,7 +41,8 @@ args = parser.parse_args()
 if not os.path.isfile(args.plugin):
     raise SystemExit("plugin not found: %s" % args.plugin)
 LoadPlugin(args.plugin, remote=False, ns=globals())
-for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "GeneralizedCubicSpline"):
+for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "GeneralizedCubicSpline",
+                   "TensionQuinticSpline"):
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
@@ -108,6 +109,12 @@ class MessageLog:
 
 
 LOG = MessageLog()
+
+
+def interior_values(values):
+    """The middle half of a line's samples."""
+    n = len(values)
+    return values[n // 4:3 * n // 4]
 
 
 def fetch(proxy):
@@ -287,7 +294,8 @@ def check_curve(label, out, inp, expected_points=None, subdivisions=None):
 print("== documentation of every property")
 helix = reader("helix.vtp")
 for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
-              CurvatureComb(Input=CubicSpline(Input=helix)), GeneralizedCubicSpline(Input=helix)):
+              CurvatureComb(Input=CubicSpline(Input=helix)), GeneralizedCubicSpline(Input=helix),
+              TensionQuinticSpline(Input=helix)):
     name = proxy.GetXMLName()
     doc = proxy.SMProxy.GetDocumentation()
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
@@ -312,7 +320,11 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                                            "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                            "CurveShapeTolerance", "VMTKArrayNames", "SpaceKind",
                                            "AutomaticTension", "Tension", "MaxTension",
-                                           "TensionArray"]}[name]
+                                           "TensionArray"],
+                "TensionQuinticSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
+                                         "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
+                                         "CurveShapeTolerance", "VMTKArrayNames", "Continuity", "Mode",
+                                         "NumberOfKnots", "Automatic", "Gamma", "Lambda"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
@@ -750,6 +762,25 @@ spline = LOG.watch(GeneralizedCubicSpline(Input=reader("akima.vtp"), SpaceKind="
 out = run(spline, "GeneralizedCubicSpline(akima, Trigonometric, Tension=5)", ("limited to 0.99 pi",))
 check(abs(point_array(out, "Tension").max() - 0.99 * np.pi) < 1e-12,
       "Trigonometric tension 5 is limited to 0.99 pi, with a warning")
+
+# =========================================================================== TensionQuinticSpline
+print("== TensionQuinticSpline on Akima's data and the helix")
+for continuity in ("C3", "C4"):
+    plain = LOG.watch(TensionQuinticSpline(Input=reader("akima.vtp"), Continuity=continuity, Automatic=0))
+    automatic = LOG.watch(TensionQuinticSpline(Input=reader("akima.vtp"), Continuity=continuity))
+    p_out = run(plain, "TensionQuinticSpline(akima, %s, fixed)" % continuity)
+    a_out = run(automatic, "TensionQuinticSpline(akima, %s, automatic)" % continuity)
+    check(cell_array(p_out, "ShapeViolations")[0] > 0 and cell_array(a_out, "ShapeViolations")[0] == 0
+          and 0 < cell_array(a_out, "MinGamma")[0] <= 1,
+          "TensionQuinticSpline %s: Akima's shape broken at gamma = 1, kept in automatic mode" % continuity,
+          "%d -> %d violations, MinGamma %s" % (cell_array(p_out, "ShapeViolations")[0],
+                                                cell_array(a_out, "ShapeViolations")[0],
+                                                fmt(cell_array(a_out, "MinGamma")[0])))
+out = run(LOG.watch(TensionQuinticSpline(Input=reader("helix.vtp"))), "TensionQuinticSpline(helix)")
+k, tau = interior_values(point_array(out, "Curvature")), interior_values(point_array(out, "Torsion"))
+check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
+      "TensionQuinticSpline(helix, 8 points per turn): curvature 0.4 and torsion 0.2 within 1%",
+      "curvature %s..%s, torsion %s..%s" % (fmt(k.min()), fmt(k.max()), fmt(tau.min()), fmt(tau.max())))
 
 # =========================================================================== summary
 elapsed = time.time() - START
