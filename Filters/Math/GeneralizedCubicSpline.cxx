@@ -75,31 +75,40 @@ Jet chainRule(const Jet& fx, double fp, double p)
   return u;
 }
 
-/// u^(m)(t), m = 0..4, of one kind's kernel.
-Jet kernel(SpaceKind kind, double p, double t)
+/// f(p), the normalisation of the exponential (scaled by 2 e^-p) and trigonometric kernels.
+double normalisation(SpaceKind kind, double p)
+{
+  return kind == SpaceKind::Exponential ? scaledHyperbolic(p, p)[0]
+    : kind == SpaceKind::Trigonometric  ? trigonometric(p)[0]
+                                        : 1.0;
+}
+
+/// u^(m)(t), m = 0..order (order <= 4; the rest 0), of one kind's kernel, whose
+/// normalisation f(p) is given (it is computed once per kernel, not per point).
+Jet kernel(SpaceKind kind, double p, double t, double fp, int order)
 {
   const bool cubic =
     kind == SpaceKind::Polynomial || (kind != SpaceKind::VariableDegree && p < NegligibleTension);
   if (cubic || kind == SpaceKind::VariableDegree)
   {
-    // (1 - t)^k and its derivatives; a vanishing coefficient stays 0 even at t = 1.
+    // (1 - t)^k and its derivatives, k >= 3: one pow for s^(k-3), the rest by
+    // products; the fourth derivative only when asked (it vanishes for k = 3).
     const double k = cubic ? 3.0 : p;
     const double s = 1.0 - t;
-    Jet u;
+    const double base = k == 3.0 ? 1.0 : std::pow(s, k - 3.0);
+    const double powers[4] = { base * s * s * s, base * s * s, base * s, base };
+    Jet u{};
     double coefficient = 1.0;
-    for (int m = 0; m < 5; ++m)
+    for (int m = 0; m < 4; ++m)
     {
-      u[m] = coefficient == 0.0 ? 0.0 : coefficient * std::pow(s, k - m);
+      u[m] = coefficient * powers[m];
       coefficient *= -(k - m);
     }
+    u[4] = order >= 4 && coefficient != 0.0 ? coefficient * std::pow(s, k - 4.0) : 0.0;
     return u;
   }
   const double x = p * (1.0 - t);
-  if (kind == SpaceKind::Exponential)
-  {
-    return chainRule(scaledHyperbolic(x, p), scaledHyperbolic(p, p)[0], p);
-  }
-  return chainRule(trigonometric(x), trigonometric(p)[0], p);
+  return chainRule(kind == SpaceKind::Exponential ? scaledHyperbolic(x, p) : trigonometric(x), fp, p);
 }
 
 void checkTension(SpaceKind kind, double tension)
@@ -126,6 +135,8 @@ SpaceKernel::SpaceKernel(
 {
   checkTension(leftKind, leftTension);
   checkTension(rightKind, rightTension);
+  this->LeftNormalisation = normalisation(leftKind, leftTension);
+  this->RightNormalisation = normalisation(rightKind, rightTension);
   const Jet u0 = this->u(0.0);
   const Jet v1 = this->v(1.0);
   this->USlope = -u0[1];
@@ -134,14 +145,14 @@ SpaceKernel::SpaceKernel(
   this->VSecond = v1[2];
 }
 
-Jet SpaceKernel::u(double t) const
+Jet SpaceKernel::u(double t, int order) const
 {
-  return kernel(this->LeftKind, this->LeftTension, t);
+  return kernel(this->LeftKind, this->LeftTension, t, this->LeftNormalisation, order);
 }
 
-Jet SpaceKernel::v(double t) const
+Jet SpaceKernel::v(double t, int order) const
 {
-  Jet v = kernel(this->RightKind, this->RightTension, 1.0 - t);
+  Jet v = kernel(this->RightKind, this->RightTension, 1.0 - t, this->RightNormalisation, order);
   v[1] = -v[1];
   v[3] = -v[3];
   return v;
@@ -340,8 +351,8 @@ Derivatives GeneralizedCubicSpline::evaluateOnSpan(int span, double x, int order
   const double h = this->Knots[span + 1] - this->Knots[span];
   const double t = std::clamp((x - this->Knots[span]) / h, 0.0, 1.0);
   const auto& [a, b, c, d] = this->Coefficients[span];
-  const Jet u = this->Kernels[span].u(t);
-  const Jet v = this->Kernels[span].v(t);
+  const Jet u = this->Kernels[span].u(t, order);
+  const Jet v = this->Kernels[span].v(t, order);
   Derivatives out;
   out.fill(Vec3::Zero());
   double scale = 1.0; // h^-m: derivatives with respect to x

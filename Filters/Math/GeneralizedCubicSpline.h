@@ -37,8 +37,9 @@ public:
   SpaceKernel(SpaceKind kind, double tension);
   SpaceKernel(SpaceKind leftKind, double leftTension, SpaceKind rightKind, double rightTension);
 
-  Jet u(double t) const;
-  Jet v(double t) const;
+  /// Derivatives 0..order (order <= 4; the others are left 0) at t.
+  Jet u(double t, int order = 4) const;
+  Jet v(double t, int order = 4) const;
   /// -u'(0) and v'(1) (both > 1): xi = 1 / uSlope(), eta = 1 / vSlope() in the paper.
   double uSlope() const { return this->USlope; }
   double vSlope() const { return this->VSlope; }
@@ -53,6 +54,8 @@ private:
   SpaceKind RightKind = SpaceKind::Polynomial;
   double LeftTension = 0.0;
   double RightTension = 0.0;
+  double LeftNormalisation = 1.0; ///< f(p) of each side, computed once
+  double RightNormalisation = 1.0;
   double USlope = 3.0;
   double VSlope = 3.0;
   double USecond = 6.0;
