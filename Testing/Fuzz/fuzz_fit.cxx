@@ -28,6 +28,7 @@
 #include "CubicSpline.h"
 #include "FitPolyline.h"
 #include "GeneralizedCubicSpline.h"
+#include "TensionQuinticFit.h"
 #include "Parameterization.h"
 #include "ShapeAnalysis.h"
 
@@ -134,8 +135,9 @@ struct Input
 {
   ss::FitOptions Options;
   ss::CubicEndCondition Ends = ss::CubicEndCondition::NotAKnot;
-  /// 0-3: the cubic; 4-7: generalized cubic, automatic exponential,
-  /// trigonometric and variable degree, and fixed exponential tension 50.
+  /// 0-2: the cubic; 3: the C4 tensioned quintic, automatic; 4-7: the
+  /// generalized cubic, automatic exponential, trigonometric and variable
+  /// degree, and fixed exponential tension 50.
   int Family = 0;
   std::vector<ss::Vec3> Points;
 };
@@ -377,6 +379,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       context.Data.Points, context.Knots, context.Data.Closed, ends));
     return built;
   };
+  if (input.Family == 3)
+  {
+    build = ss::tensionQuinticBuilder(ss::QuinticFitOptions{});
+  }
   if (input.Family >= 4)
   {
     ss::GeneralizedCubicOptions generalized;
