@@ -469,7 +469,11 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
   const double period = t.back() - t.front();
   if (!nonIncreasingSpans(weights, xi, closed, period).empty())
   {
-    throw std::invalid_argument("tension quintic spline: X(t) is not increasing");
+    // The abscissae stayed non-increasing after every recovery (fuzz: spans from
+    // 1e25 to 1e37 in one line): this line cannot be a tensioned quintic.
+    throw std::domain_error("tension quintic spline: its abscissae X(t) are not increasing on "
+                            "these knots (paper 000, footnote 3; extremely uneven spacing); use "
+                            "the generalized cubic, another parameterization, or resample the line");
   }
   std::vector<std::array<double, 6>> xBezier(n);
   std::vector<std::array<Vec3, 6>> cBezier(n);

@@ -263,7 +263,7 @@ TEST(TensionQuinticSpline, KnotSystemRecoversFromANonIncreasingSolution)
   EXPECT_EQ(raw.Recoveries, 0);
   std::vector<Vec3> points(raw.Xi.size(), Vec3::Zero());
   EXPECT_THROW(TensionQuinticSpline::fromControlPoints(t, raw.Xi, points, p, false),
-    std::invalid_argument);
+    std::domain_error);
 
   // Recovery moves the requested knots near the bad spans towards the knots
   // of the Greville abscissae and keeps the parameters.
