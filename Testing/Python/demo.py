@@ -7,6 +7,7 @@ Runs the CubicSpline filter on Data/aorta-centerline.vtp and Data/akima.vtp and
 PolylineShapeAnalysis on the same data with the spline as its Curve input, and
 writes into DIR (created if missing):
   aorta-cubic.vtp, aorta-analysis.vtp, akima-cubic.vtp, akima-analysis.vtp
+  aorta-gencubic.vtp, akima-gencubic.vtp  the shape-preserving generalized cubic
   aorta-torsion.png            the aorta curves as tubes coloured by torsion
                                (Cool to Warm, symmetric range clipped to the 95th
                                percentile of |torsion|), data points as dots
@@ -137,12 +138,15 @@ for key, file_name in (("aorta", "aorta-centerline.vtp"), ("akima", "akima.vtp")
     analysis.UpdatePipeline()
     SaveData(out_path("%s-cubic.vtp" % key), proxy=cubic)
     SaveData(out_path("%s-analysis.vtp" % key), proxy=analysis)
+    # The shape-preserving generalized cubic (automatic exponential tension) on the same data.
+    tensioned = GeneralizedCubicSpline(Input=src)
+    SaveData(out_path("%s-gencubic.vtp" % key), proxy=tensioned)
     results[key] = (src, cubic, analysis, servermanager.Fetch(src), servermanager.Fetch(cubic),
-                    servermanager.Fetch(analysis))
+                    servermanager.Fetch(analysis), servermanager.Fetch(tensioned))
 
 # =========================================================================== summary
 print("Cubic spline (Not A Knot, Chord Length, 10 samples per span) and its shape audit")
-for key, (src, cubic, analysis, data, curve, audit) in results.items():
+for key, (src, cubic, analysis, data, curve, audit, tensioned) in results.items():
     curvature, torsion = array(curve, "Curvature"), array(curve, "Torsion")
     length, violations = array(curve, "Length", True), array(curve, "ShapeViolations", True)
     seen = array(audit, "ShapeViolations", True)
@@ -155,11 +159,18 @@ for key, (src, cubic, analysis, data, curve, audit) in results.items():
                  np.percentile(np.abs(t), 98), violations[i], seen[i]))
 print("  (the filter audits its curve at 16 samples per span; PolylineShapeAnalysis sees only the output's "
       "10 per span)")
+print("Generalized cubic spline, automatic exponential tension (the shape-preserving family)")
+for key, result in results.items():
+    tensioned = result[6]
+    violations, tension = array(tensioned, "ShapeViolations", True), array(tensioned, "MaxTension", True)
+    for i in range(len(violations)):
+        print("  %s line %d: ShapeViolations %d (the cubic: %d), largest tension %.4g"
+              % (key, i, violations[i], array(result[4], "ShapeViolations", True)[i], tension[i]))
 
 # =========================================================================== aorta-curvature-torsion.png
 # (Made before the render views: after a render view's screenshot, the charts in
 # this layout came out with their axis labels cut by the axis titles.)
-src, cubic, analysis, data, curve, audit = results["aorta"]
+src, cubic, analysis, data, curve, audit, _ = results["aorta"]
 line0 = ExtractSelection(Input=cubic, Selection=IDSelectionSource(IDs=[0, 0], FieldType="CELL"))
 line0.UpdatePipeline()
 line0_data = servermanager.Fetch(line0)
@@ -202,7 +213,7 @@ Render(torsion_view)
 SaveScreenshot(out_path("aorta-curvature-torsion.png"), layout, ImageResolution=[1000, 700])
 
 # =========================================================================== aorta-torsion.png
-src, cubic, analysis, data, curve, audit = results["aorta"]
+src, cubic, analysis, data, curve, audit, _ = results["aorta"]
 torsion = array(curve, "Torsion")
 limit = float(np.percentile(np.abs(torsion), TORSION_PERCENTILE))
 saturated = 100.0 * np.mean(np.abs(torsion) > limit)
@@ -234,7 +245,7 @@ SaveScreenshot(out_path("aorta-torsion.png"), view, ImageResolution=[W, H])
 Delete(view)
 
 # =========================================================================== akima-curvature.png
-src, cubic, analysis, data, curve, audit = results["akima"]
+src, cubic, analysis, data, curve, audit, _ = results["akima"]
 fine = CubicSpline(Input=src, NumberOfSubdivisions=20)
 fine.UpdatePipeline()
 fine_curve = servermanager.Fetch(fine)
