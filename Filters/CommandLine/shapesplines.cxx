@@ -6,6 +6,7 @@
 #include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
 #include "vtkTensionQuinticSplineFilter.h"
+#include "vtkVariableDegreeSplineFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -72,17 +73,24 @@ Options of fit:
                            cubic     classical C2 cubic spline (the baseline)
                            gencubic  C2 generalized cubic, automatic tension
                            quintic   C3/C4 tensioned quintic, automatic tension
-  --end-condition NAME   cubic: not-a-knot (default), natural or clamped
+                           vdps      C3 variable degree spline, automatic degrees
+  --end-condition NAME   cubic: not-a-knot (default), natural or clamped;
+                         vdps: natural (default) or clamped
   --kind NAME            gencubic: exponential (default), trigonometric,
                          variable-degree or polynomial
   --tension T            gencubic: starting tension (fixed with --fixed);
                          the degree for variable-degree (default 0)
   --max-tension T        gencubic: cap of the automatic tension (default 1000)
-  --fixed                gencubic, quintic: no automatic tension
+  --fixed                gencubic, quintic, vdps: no automatic tension/degrees
   --continuity C         quintic: c4 (default) or c3
-  --mode M               quintic: interpolate (default) or approximate
-  --knots N              quintic, approximate: number of knots (default 10)
-  --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1)
+  --mode M               quintic: interpolate (default) or approximate;
+                         vdps: interpolate (default), approximate (the local
+                         scheme), approximate-global or approximate-local
+  --knots N              approximate: number of knots (default 10)
+  --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1);
+                         vdps: --lambda is the corner cutting tension (1)
+  --degree K             vdps: starting (fixed with --fixed) degree (default 5)
+  --max-degree K         vdps: cap of the automatic degrees (default 200)
   --parameterization P   chord (default), centripetal or uniform knots
   --closed               close every line of 3 or more distinct points
   --samples N            N samples per span between data points (default 10)
@@ -175,8 +183,8 @@ struct Arguments
 };
 
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
-  "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "parameterization", "samples", "arc-length", "data-tolerance",
-  "curve-tolerance" };
+  "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
+  "max-degree", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
 const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "quiet", "help" };
 
 Arguments Parse(int argc, char* argv[])
@@ -664,6 +672,34 @@ std::map<std::string, FamilyFactory> Families()
        filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
        filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } },
+    { "vdps", [](Arguments& args) {
+       auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
+       const std::map<std::string, int> modes = { { "interpolate",
+                                                    vtkVariableDegreeSplineFilter::INTERPOLATE },
+         { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
+         { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
+         { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } };
+       const std::string mode = args.Value("mode", "interpolate");
+       if (!modes.count(mode))
+       {
+         throw UsageError(
+           "--mode must be interpolate, approximate, approximate-global or approximate-local");
+       }
+       filter->SetMode(modes.at(mode));
+       const std::string ends = args.Value("end-condition", "natural");
+       if (ends != "natural" && ends != "clamped")
+       {
+         throw UsageError("--end-condition must be natural or clamped for vdps");
+       }
+       filter->SetEndCondition(ends == "clamped" ? vtkVariableDegreeSplineFilter::CLAMPED
+                                                 : vtkVariableDegreeSplineFilter::NATURAL);
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 10, 2, 1e6)));
+       filter->SetAutomaticDegrees(!args.Flag("fixed"));
+       filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
+       filter->SetMaxDegree(args.Number("max-degree", 200.0, 5.0, 1000.0));
+       filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } } };
 }

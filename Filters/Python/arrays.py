@@ -25,7 +25,7 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 import shapesplines
 
 FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter",
-            "quintic": "vtkTensionQuinticSplineFilter"}
+            "quintic": "vtkTensionQuinticSplineFilter", "vdps": "vtkVariableDegreeSplineFilter"}
 
 _POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
                  "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",

@@ -6,6 +6,7 @@
 #include "Curve.h"
 #include "FitPolyline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -73,6 +74,12 @@ inline CurveBuilder cubicBuilder(CubicEndCondition ends = CubicEndCondition::Not
       CubicSpline::interpolate(context.Data.Points, context.Knots, context.Data.Closed, ends));
     return built;
   };
+}
+
+/// |left - right| relative to the larger of the two: the jump of a derivative at a knot.
+inline double relativeJump(const Vec3& left, const Vec3& right)
+{
+  return (left - right).norm() / std::max({ left.norm(), right.norm(), 1e-300 });
 }
 
 struct RelativeErrors

@@ -11,6 +11,7 @@
 #include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkShapeSplineFilter.h"
 #include "vtkTensionQuinticSplineFilter.h"
+#include "vtkVariableDegreeSplineFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -43,7 +44,16 @@ std::vector<SplineFilter> Filters()
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } },
     { "TensionQuinticC4", [=] { return quintic(vtkTensionQuinticSplineFilter::C4); } },
-    { "TensionQuinticC3", [=] { return quintic(vtkTensionQuinticSplineFilter::C3); } } };
+    { "TensionQuinticC3", [=] { return quintic(vtkTensionQuinticSplineFilter::C3); } },
+    { "VariableDegree", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
+                              vtkSmartPointer<vtkVariableDegreeSplineFilter>::New()); } },
+    { "VariableDegreeClampedFixed", [] {
+       auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
+       filter->SetEndCondition(vtkVariableDegreeSplineFilter::CLAMPED);
+       filter->AutomaticDegreesOff();
+       filter->SetDegree(12.0);
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } } };
 }
 
 /// A curved, non-planar line (part of a conical helix), scaled and moved.

@@ -58,11 +58,6 @@ long double referenceU(SpaceKind kind, long double p, long double t)
       return std::pow(1 - t, 3.0L);
   }
 }
-
-double relativeJump(const Vec3& left, const Vec3& right)
-{
-  return (left - right).norm() / std::max({ left.norm(), right.norm(), 1e-300 });
-}
 } // namespace
 
 TEST(GeneralizedCubicKernel, NormalisationAndDerivativesForEveryKindAndTension)

@@ -4,6 +4,7 @@
 #include "GeneralizedCubicSpline.h"
 #include "MathTestUtilities.h"
 #include "TensionQuinticFit.h"
+#include "VariableDegreeSpline.h"
 
 #include <gtest/gtest.h>
 
@@ -44,6 +45,15 @@ CurveBuilder quinticBuilder(QuinticContinuity continuity, double gamma, double l
   return tensionQuinticBuilder(quintic);
 }
 
+CurveBuilder variableDegree(VariableDegreeEnds ends, double degree)
+{
+  VariableDegreeOptions options;
+  options.Ends = ends;
+  options.Automatic = false;
+  options.Degree = degree;
+  return variableDegreeBuilder(options);
+}
+
 std::vector<Family> Families()
 {
   return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
@@ -57,7 +67,10 @@ std::vector<Family> Families()
     { "TensionQuinticC4", quinticBuilder(QuinticContinuity::C4, 0.4, 1.0), false },
     { "TensionQuinticC3", quinticBuilder(QuinticContinuity::C3, 1.3, 0.3), false },
     { "TensionQuinticC4Closed", quinticBuilder(QuinticContinuity::C4, 0.4, 1.0), true },
-    { "TensionQuinticC3Closed", quinticBuilder(QuinticContinuity::C3, 0.5, 0.5), true } };
+    { "TensionQuinticC3Closed", quinticBuilder(QuinticContinuity::C3, 0.5, 0.5), true },
+    { "VariableDegreeAutomatic", variableDegreeBuilder({}), false },
+    { "VariableDegreeClosed", variableDegreeBuilder({}), true },
+    { "VariableDegreeClampedFixed", variableDegree(VariableDegreeEnds::Clamped, 9.0), false } };
 }
 
 /// Uneven, non-planar data: a conical helix with a kink.
@@ -94,6 +107,21 @@ double size(const std::vector<Vec3>& points)
   return boundingBoxDiagonal(points);
 }
 
+/**
+ * How much rounding of the derivatives, 1e4 eps relative, can move the
+ * torsion at sample k: that times |s'| |s''| |s'''| / |s' x s''|^2, in data
+ * units. It matters where high degrees make |s'''| >> |s''|: at a knot of
+ * degree 200 of the variable degree spline, 6e3 eps was measured.
+ */
+double torsionRounding(const Fitted& fitted, int k)
+{
+  const Derivatives& d = fitted.Sampled.Samples.Values[k];
+  const double area = d[1].cross(d[2]).squaredNorm();
+  const double relative = 1e4 * 2.220446049250313e-16;
+  const double bound = relative * d[1].norm() * d[2].norm() * d[3].norm() / area;
+  return area > 0.0 ? bound / fitted.Fit.Scale : 0.0;
+}
+
 class Invariance : public ::testing::TestWithParam<Family>
 {
 };
@@ -112,8 +140,9 @@ void expectTransformed(const Family& family, Map map, double scale, double hande
   const Fitted b = fit(family, moved);
   ASSERT_EQ(a.Sampled.Samples.size(), b.Sampled.Samples.size());
   const double extent = size(moved);
-  // Curvature that vanishes (natural ends) is compared with rounding, 1e-13 / size.
-  const double zeroCurvature = 1e-13 / size(data);
+  // Curvature that vanishes (natural ends) is compared with rounding, 1e-12 /
+  // size: ends made natural through a solve keep its rounding (condition x eps).
+  const double zeroCurvature = 1e-12 / size(data);
   for (int k = 0; k < a.Sampled.Samples.size(); ++k)
   {
     const Vec3 expected = map(a.Sampled.Samples.Values[k][0]);
@@ -121,7 +150,9 @@ void expectTransformed(const Family& family, Map map, double scale, double hande
     const FrenetFrame& fa = a.Sampled.Frames[k];
     const FrenetFrame& fb = b.Sampled.Frames[k];
     EXPECT_NEAR(fb.Curvature * scale, fa.Curvature, 1e-10 * fa.Curvature + zeroCurvature) << k;
-    EXPECT_NEAR(fb.Torsion * scale, handedness * fa.Torsion, 1e-9 * (1 + std::abs(fa.Torsion))) << k;
+    EXPECT_NEAR(fb.Torsion * scale, handedness * fa.Torsion,
+      1e-9 * (1 + std::abs(fa.Torsion)) + torsionRounding(a, k))
+      << k;
   }
   EXPECT_EQ(a.Fit.Audit.violations(), b.Fit.Audit.violations());
 }
@@ -168,7 +199,7 @@ TEST_P(Invariance, ReversalTracesTheSameCurveBackwards)
     const int r = family.Closed ? ((n - 7 - k) % n + n) % n : n - 1 - k;
     EXPECT_LT((b.Samples.Values[r][0] - f.Samples.Values[k][0]).norm(), 1e-12 * extent) << k;
     EXPECT_NEAR(b.Frames[r].Curvature, f.Frames[k].Curvature,
-      1e-9 * f.Frames[k].Curvature + 1e-13 / extent)
+      1e-9 * f.Frames[k].Curvature + 1e-12 / extent)
       << k;
     // At a knot the torsion is one-sided (the third derivative of a C2 curve
     // jumps there): the sample takes the span after it, which reversal makes the

@@ -1,7 +1,9 @@
-// The tensioned quintic B-splines with all shape parameters 1 against SciPy's
+// The tensioned quintic B-splines with all shape parameters 1, and the
+// variable degree splines with all degrees 5 and tensions 1, against SciPy's
 // classical quintic splines (values written at test time by
 // scipy_quintic_reference.py, whose output file is the first argument).
 #include "TensionQuinticSpline.h"
+#include "VariableDegreeSpline.h"
 
 #include <gtest/gtest.h>
 
@@ -136,6 +138,20 @@ TEST_P(QuinticAgainstSciPy, PeriodicInterpolation)
   const auto spline = TensionQuinticSpline::interpolate(c.Points, c.Knots,
     QuinticParameters::uniform(GetParam(), static_cast<int>(c.Points.size())), true);
   compare("closed", spline, 1e-8);
+}
+
+TEST(VariableDegreeAgainstSciPy, AllDegreesFiveIsTheQuinticInterpolant)
+{
+  for (const char* name : { "natural", "closed" })
+  {
+    const ReferenceCase& c = referenceCase(name);
+    const size_t knots = c.Points.size();
+    const VariableDegreeParameters quintic{ std::vector<double>(knots, 5.0),
+      std::vector<double>(knots, 1.0) };
+    const auto spline = VariableDegreeSpline::interpolate(
+      c.Points, c.Knots, c.Closed, quintic, VariableDegreeEnds::Natural);
+    compare(name, spline, 1e-8);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Continuity, QuinticAgainstSciPy,

@@ -8,6 +8,7 @@ SciPy's values and derivatives 0..4 of
            by five knots each side at the end spacings,
   open   - make_interp_spline(k=5) with s' and s'' at each end taken from the
            quintic through the six end points,
+  natural - make_interp_spline(k=5) with s'' = s''' = 0 at both ends,
   closed - make_interp_spline(k=5, bc_type="periodic"),
 so the C++ test compares the construction with an independent implementation.
 
@@ -53,6 +54,11 @@ def main():
         ends = (end_derivatives(t, points, True), end_derivatives(t, points, False))
         write_case(out, "open", False, t, points,
                    make_interp_spline(t, points, k=5, bc_type=ends), t)
+
+        zero = np.zeros(3)
+        natural = ([(2, zero), (3, zero)], [(2, zero), (3, zero)])
+        write_case(out, "natural", False, t, points,
+                   make_interp_spline(t, points, k=5, bc_type=natural), t)
 
         closed = np.vstack([points[:-1], points[:1]])
         write_case(out, "closed", True, t, points[:-1],

@@ -29,6 +29,7 @@
 #include "FitPolyline.h"
 #include "GeneralizedCubicSpline.h"
 #include "TensionQuinticFit.h"
+#include "VariableDegreeSpline.h"
 #include "Parameterization.h"
 #include "ShapeAnalysis.h"
 
@@ -135,7 +136,9 @@ struct Input
 {
   ss::FitOptions Options;
   ss::CubicEndCondition Ends = ss::CubicEndCondition::NotAKnot;
-  /// 0-2: the cubic; 3: the C4 tensioned quintic, automatic; 4-7: the
+  /// 0-1: the cubic; 2: the variable degree spline (by the end byte:
+  /// automatic natural, automatic clamped, fixed degree 40); 3: the C4
+  /// tensioned quintic, automatic; 4-7: the
   /// generalized cubic, automatic exponential, trigonometric and variable
   /// degree, and fixed exponential tension 50.
   int Family = 0;
@@ -379,6 +382,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       context.Data.Points, context.Knots, context.Data.Closed, ends));
     return built;
   };
+  if (input.Family == 2)
+  {
+    ss::VariableDegreeOptions variable;
+    const int choice = static_cast<int>(ends);
+    variable.Ends = choice == 1 ? ss::VariableDegreeEnds::Clamped : ss::VariableDegreeEnds::Natural;
+    variable.Automatic = choice != 2;
+    variable.Degree = choice == 2 ? 40.0 : 5.0;
+    build = ss::variableDegreeBuilder(variable);
+  }
   if (input.Family == 3)
   {
     build = ss::tensionQuinticBuilder(ss::QuinticFitOptions{});

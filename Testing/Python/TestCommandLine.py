@@ -148,6 +148,21 @@ quintic = read_csv(temp("akima-quintic.csv"))
 check(code == 0 and "shape violations 0" in out and 0 < quintic["Gamma"].min() <= 1,
       "--family quintic keeps Akima's shape; Gamma written", out.strip().splitlines()[0] if out.strip() else err)
 
+code, out, err = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-vdps.csv"),
+                     "--family", "vdps")
+code2, out2, err2 = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-vdps5.csv"),
+                        "--family", "vdps", "--fixed")
+vdps = read_csv(temp("akima-vdps.csv"))
+check(code == 0 and code2 == 0 and "shape violations 0" in out and "shape violations 0" not in out2
+      and vdps["Degree"].min() >= 5 and vdps["Degree"].max() > 5,
+      "--family vdps keeps Akima's shape where degree 5 (the quintic) does not; Degree written",
+      "%s | %s" % (out.strip().splitlines()[0] if out.strip() else err,
+                   out2.strip().splitlines()[0] if out2.strip() else err2))
+code, out, err = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("helix-vdps.vtp"),
+                     "--family", "vdps", "--mode", "approximate-global", "--knots", "6")
+check(code == 0 and "shape violations 0" in out, "--family vdps --mode approximate-global",
+      out.strip().splitlines()[0] if out.strip() else err)
+
 # ---------------------------------------------------------------------------- audit
 code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
 rows = [l for l in out.splitlines() if l.startswith("line ")]
@@ -174,6 +189,10 @@ cases = [
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "quintic", "--continuity", "c5"), 1,
      "--continuity must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "quintic", "--gamma", "3"), 1, "--gamma must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--mode", "smooth"), 1, "--mode must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--degree", "4"), 1, "--degree must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--end-condition", "not-a-knot"), 1,
+     "--end-condition must be natural or clamped"),
     (("fit", temp("two.csv")), 1, "needs -o"),
     (("fit", temp("two.csv"), "-o"), 1, "needs a value"),
     (("audit",), 1, "audit takes INPUT"),

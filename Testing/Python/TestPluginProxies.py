@@ -42,7 +42,7 @@ if not os.path.isfile(args.plugin):
     raise SystemExit("plugin not found: %s" % args.plugin)
 LoadPlugin(args.plugin, remote=False, ns=globals())
 for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "GeneralizedCubicSpline",
-                   "TensionQuinticSpline"):
+                   "TensionQuinticSpline", "VariableDegreeSpline"):
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
@@ -295,7 +295,7 @@ print("== documentation of every property")
 helix = reader("helix.vtp")
 for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
               CurvatureComb(Input=CubicSpline(Input=helix)), GeneralizedCubicSpline(Input=helix),
-              TensionQuinticSpline(Input=helix)):
+              TensionQuinticSpline(Input=helix), VariableDegreeSpline(Input=helix)):
     name = proxy.GetXMLName()
     doc = proxy.SMProxy.GetDocumentation()
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
@@ -324,7 +324,12 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "TensionQuinticSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                          "CurveShapeTolerance", "VMTKArrayNames", "Continuity", "Mode",
-                                         "NumberOfKnots", "Automatic", "Gamma", "Lambda"]}[name]
+                                         "NumberOfKnots", "Automatic", "Gamma", "Lambda"],
+                "VariableDegreeSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
+                                         "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
+                                         "CurveShapeTolerance", "VMTKArrayNames", "Mode", "NumberOfKnots",
+                                         "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
+                                         "ScaleLambdaWithDegree", "EndCondition", "DegreeArray"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
@@ -781,6 +786,31 @@ k, tau = interior_values(point_array(out, "Curvature")), interior_values(point_a
 check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
       "TensionQuinticSpline(helix, 8 points per turn): curvature 0.4 and torsion 0.2 within 1%",
       "curvature %s..%s, torsion %s..%s" % (fmt(k.min()), fmt(k.max()), fmt(tau.min()), fmt(tau.max())))
+
+# =========================================================================== VariableDegreeSpline
+print("== VariableDegreeSpline on Akima's data, the helix and noisy helix points")
+plain = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp"), AutomaticDegrees=0))
+automatic = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp")))
+p_out = run(plain, "VariableDegreeSpline(akima, degree 5)")
+a_out = run(automatic, "VariableDegreeSpline(akima, automatic)")
+degree = point_array(a_out, "Degree")
+check(cell_array(p_out, "ShapeViolations")[0] > 0 and cell_array(a_out, "ShapeViolations")[0] == 0
+      and degree.min() < degree.max() == cell_array(a_out, "MaxDegree")[0],
+      "VariableDegreeSpline: Akima's shape broken by the quintic, kept with degrees raised where needed",
+      "%d -> %d violations, MaxDegree %s" % (cell_array(p_out, "ShapeViolations")[0],
+                                            cell_array(a_out, "ShapeViolations")[0],
+                                            fmt(cell_array(a_out, "MaxDegree")[0])))
+out = run(LOG.watch(VariableDegreeSpline(Input=reader("helix.vtp"))), "VariableDegreeSpline(helix)")
+k, tau = interior_values(point_array(out, "Curvature")), interior_values(point_array(out, "Torsion"))
+check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
+      "VariableDegreeSpline(helix, 8 points per turn): curvature 0.4 and torsion 0.2 within 1%",
+      "curvature %s..%s, torsion %s..%s" % (fmt(k.min()), fmt(k.max()), fmt(tau.min()), fmt(tau.max())))
+for mode in ("Approximate Global", "Approximate Local"):
+    out = run(LOG.watch(VariableDegreeSpline(Input=reader("helix.vtp"), Mode=mode, NumberOfKnots=6)),
+              "VariableDegreeSpline(helix, %s)" % mode)
+    check(cell_array(out, "ShapeViolations")[0] == 0 and point_array(out, "Degree").min() >= 5,
+          "VariableDegreeSpline %s: keeps the shape of psi" % mode,
+          "violations %d" % cell_array(out, "ShapeViolations")[0])
 
 # =========================================================================== summary
 elapsed = time.time() - START

@@ -1,0 +1,169 @@
+/**
+ * @class   vtkVariableDegreeSplineFilter
+ * @brief   C3 variable degree splines through (or near) each polyline, with
+ *          degrees raised automatically only where the curve breaks the
+ *          shape of the data
+ *
+ * Costantini & Manni's quintic-like variable degree splines (paper 001): on
+ * each span the curve lies in span{1 - v, v, (1 - v)^k_i, v (1 - v)^(k_i - 1),
+ * v^(k_i+1 - 1) (1 - v), v^k_i+1} with a degree k_i >= 5 per knot, built by
+ * corner cutting from one de Boor point per knot with a tension lambda_i per
+ * knot. All degrees 5 and lambda 1 is the C4 quintic spline; otherwise the
+ * curve is C3, and as degrees grow (and lambda falls) it tends to the data
+ * polygon. Systems are banded (periodic for closed lines): O(n).
+ *
+ * Mode INTERPOLATE (default) passes through every point. With
+ * AutomaticDegrees on (default) the degrees start at Degree and are raised
+ * only at the knots of spans where the shape audit (paper 001, Definition 1)
+ * fails, until none fails or MaxDegree is reached. The APPROXIMATE modes
+ * (open lines with at least 2 NumberOfKnots points; others are interpolated)
+ * fit NumberOfKnots knots uniform in the parameter in least squares and keep
+ * the shape of psi, the best piecewise linear least-squares fit: GLOBAL
+ * raises every degree together, LOCAL raises degrees and pulls the curve
+ * towards psi (weighted least squares) only at failing spans.
+ *
+ * Output: the contract of vtkShapeSplineFilter, plus the point array Degree
+ * (the larger degree of each sample's span) and the cell array MaxDegree.
+ *
+ * @sa vtkShapeSplineFilter vtkTensionQuinticSplineFilter vtkGeneralizedCubicSplineFilter
+ */
+#ifndef vtkVariableDegreeSplineFilter_h
+#define vtkVariableDegreeSplineFilter_h
+
+#include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkShapeSplineFilter.h"
+
+class SHAPESPLINESFILTERS_EXPORT vtkVariableDegreeSplineFilter : public vtkShapeSplineFilter
+{
+public:
+  static vtkVariableDegreeSplineFilter* New();
+  vtkTypeMacro(vtkVariableDegreeSplineFilter, vtkShapeSplineFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ModeType
+  {
+    INTERPOLATE = 0,
+    APPROXIMATE_GLOBAL = 1,
+    APPROXIMATE_LOCAL = 2
+  };
+
+  enum EndConditionType
+  {
+    NATURAL = 0,
+    CLAMPED = 1
+  };
+
+  ///@{
+  /**
+   * INTERPOLATE (default), APPROXIMATE_GLOBAL or APPROXIMATE_LOCAL (least
+   * squares with NumberOfKnots knots; section 4.2 of the paper).
+   */
+  vtkSetClampMacro(Mode, int, INTERPOLATE, APPROXIMATE_LOCAL);
+  vtkGetMacro(Mode, int);
+  void SetModeToInterpolate() { this->SetMode(INTERPOLATE); }
+  void SetModeToApproximateGlobal() { this->SetMode(APPROXIMATE_GLOBAL); }
+  void SetModeToApproximateLocal() { this->SetMode(APPROXIMATE_LOCAL); }
+  const char* GetModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Knots of the approximation (default 9, at least 2); a line with fewer
+   * than twice as many points gets fewer knots.
+   */
+  vtkSetClampMacro(NumberOfKnots, int, 2, 1000000);
+  vtkGetMacro(NumberOfKnots, int);
+  ///@}
+
+  ///@{
+  /**
+   * Raise degrees only at knots of spans where the shape audit fails
+   * (default on); off, every knot gets Degree.
+   */
+  vtkSetMacro(AutomaticDegrees, bool);
+  vtkGetMacro(AutomaticDegrees, bool);
+  vtkBooleanMacro(AutomaticDegrees, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The degree of every knot (fixed) or the starting degree (automatic);
+   * default 5, the quintic.
+   */
+  vtkSetClampMacro(Degree, double, 5.0, 1000.0);
+  vtkGetMacro(Degree, double);
+  ///@}
+
+  ///@{
+  /**
+   * The largest degree the automatic mode may reach (default 200: the
+   * polygon limit is slow, and Akima's flat run needs 200 to stay straight).
+   */
+  vtkSetClampMacro(MaxDegree, double, 5.0, 1000.0);
+  vtkGetMacro(MaxDegree, double);
+  ///@}
+
+  ///@{
+  /**
+   * The tension lambda of the first corner cutting step (default 1). With
+   * ScaleLambdaWithDegree on (default) knot i gets Lambda (5 / k_i)^3, so
+   * degree 5 is the quintic and lambda falls as the degree rises, which the
+   * polygon limit needs (the paper's Figure 5 uses 1/k; the cube reaches the
+   * data's shape at lower degrees); off, every knot gets Lambda.
+   */
+  vtkSetClampMacro(Lambda, double, 0.001, 10.0);
+  vtkGetMacro(Lambda, double);
+  vtkSetMacro(ScaleLambdaWithDegree, bool);
+  vtkGetMacro(ScaleLambdaWithDegree, bool);
+  vtkBooleanMacro(ScaleLambdaWithDegree, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Ends of open interpolating lines: NATURAL (default; zero curvature and
+   * torsion at the ends; lambda stays Lambda at the two knots next to each
+   * end, which keeps the system well-conditioned at high degrees) or
+   * CLAMPED (the first and last three de Boor points coincide, so the ends
+   * depend on the end points only). Approximations are always clamped.
+   */
+  vtkSetClampMacro(EndCondition, int, NATURAL, CLAMPED);
+  vtkGetMacro(EndCondition, int);
+  ///@}
+
+  ///@{
+  /**
+   * The name of an input point array giving a degree per point (empty or
+   * "None", the default: none). Interpolation only; values below 5 or not
+   * finite fall back to Degree.
+   */
+  vtkSetStringMacro(DegreeArrayName);
+  vtkGetStringMacro(DegreeArrayName);
+  ///@}
+
+protected:
+  vtkVariableDegreeSplineFilter();
+  ~vtkVariableDegreeSplineFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+#ifndef __VTK_WRAP__
+  shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
+#endif
+  const char* GetPointValuesArrayName() override;
+
+  int Mode = INTERPOLATE;
+  int NumberOfKnots = 9;
+  bool AutomaticDegrees = true;
+  double Degree = 5.0;
+  double MaxDegree = 200.0;
+  double Lambda = 1.0;
+  bool ScaleLambdaWithDegree = true;
+  int EndCondition = NATURAL;
+  char* DegreeArrayName = nullptr;
+
+private:
+  vtkVariableDegreeSplineFilter(const vtkVariableDegreeSplineFilter&) = delete;
+  void operator=(const vtkVariableDegreeSplineFilter&) = delete;
+};
+
+#endif
