@@ -158,6 +158,10 @@ public:
 
   /// The five Bezier points of a span (the qqr curve (2.5) on it).
   const std::array<Vec3, 5>& bezier(int span) const { return this->Bezier[span]; }
+  /// The smallest speed |Q'| h on a span (65 samples) relative to the length
+  /// of its Bezier polygon: ~1 for a regular span, ~alpha^2 2^-alpha for large
+  /// exponents, where the span approaches a corner at its middle Bezier point.
+  double speedRatio(int span) const;
   /// Left and right exponent of a span.
   const std::array<double, 2>& exponents(int span) const { return this->Exponents[span]; }
 
@@ -191,6 +195,10 @@ double raisedQQRExponent(double alpha, double maxAlpha);
  * Builder of qqr B-spline-like curves for fitPolyline: interpolation or the
  * data as control polygon (its shape reference then being the data polygon),
  * fixed exponents or automatic. Per-point values (PointValues) are ignored.
+ * Automatic: alpha = beta per knot, raised (raisedQQRExponent) at both knots
+ * of every failing span through preserveShape, except where a raise would make
+ * a span irregular (speedRatio below 1e-3: undone, the knots frozen); the
+ * curve returned is the regular one with the fewest failing spans seen.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines
