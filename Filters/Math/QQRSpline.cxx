@@ -21,14 +21,18 @@ void checkExponent(double a, const char* what)
 }
 
 /**
- * d^m/dx^m x^p, m = 0..order, at x >= 0. A falling factorial p (p-1)...(p-m+1)
- * of zero (integer p < m) gives an exact 0; at x = 0 a negative exponent p - m
- * gives +-inf (the derivative is unbounded there), a zero one the factorial.
+ * d^m/dx^m of y^p, y = 1 - x, m = 0..order, from x and xc = 1 - x (both given:
+ * whichever is the smaller is exact). y^(p-m) is exp((p-m) log1p(-x)) for
+ * x < 1/2, so that the rounding of 1 - x near x = 0 does not cost p ulps,
+ * and pow(xc, p-m) beyond. A falling factorial p (p-1)...(p-m+1) of zero
+ * (integer p < m) gives an exact 0; at y = 0 a negative exponent p - m gives
+ * +-inf (the derivative is unbounded there), a zero one the factorial.
  */
-Jet powJet(double x, double p, int order)
+Jet complementPow(double x, double xc, double p, int order)
 {
   Jet out{};
   double factor = 1.0;
+  const double logY = x < 0.5 ? std::log1p(-x) : 0.0;
   for (int m = 0; m <= order; ++m)
   {
     if (factor == 0.0)
@@ -36,26 +40,25 @@ Jet powJet(double x, double p, int order)
       break; // this and every higher derivative vanish identically
     }
     const double e = p - m;
-    if (x > 0.0)
+    double value = 0.0;
+    if (e == 0.0)
     {
-      out[m] = e == 0.0 ? factor : factor * std::pow(x, e);
+      value = factor;
+    }
+    else if (x < 0.5)
+    {
+      value = factor * std::exp(e * logY);
+    }
+    else if (xc > 0.0)
+    {
+      value = factor * std::pow(xc, e);
     }
     else
     {
-      out[m] = e > 0.0 ? 0.0 : (e == 0.0 ? factor : std::copysign(Infinity, factor));
+      value = e > 0.0 ? 0.0 : std::copysign(Infinity, factor);
     }
+    out[m] = m % 2 == 0 ? value : -value; // d/dx = -d/dy
     factor *= e;
-  }
-  return out;
-}
-
-/// Derivatives in x of (1 - x)^p, with xc = 1 - x given exactly.
-Jet complementPow(double xc, double p, int order)
-{
-  Jet out = powJet(xc, p, order);
-  for (int m = 1; m <= order; m += 2)
-  {
-    out[m] = -out[m];
   }
   return out;
 }
@@ -63,7 +66,7 @@ Jet complementPow(double xc, double p, int order)
 /// Derivatives in x of x (1 - x)^p (xc = 1 - x): x f^(m) + m f^(m-1), f = (1 - x)^p.
 Jet xTimesComplementPow(double x, double xc, double p, int order)
 {
-  const Jet f = complementPow(xc, p, order);
+  const Jet f = complementPow(x, xc, p, order);
   Jet out{};
   for (int m = 0; m <= order; ++m)
   {
@@ -107,7 +110,7 @@ struct EndJets
 EndJets endJets(double x, double xc, double a, int order)
 {
   EndJets jets;
-  jets.Power = complementPow(xc, a, order);
+  jets.Power = complementPow(x, xc, a, order);
   jets.Linear = xTimesComplementPow(x, xc, a - 1.0, order);
   for (double& value : jets.Linear)
   {
@@ -131,7 +134,7 @@ EndJets endJets(double x, double xc, double a, int order)
   else
   {
     // At most ~32 ulps lost here: G >= ~c (c + 1) x^2 / 2 >= 1/32 relative to 1.
-    jets.Tail[0] = xc > 0.0 ? 1.0 - std::exp(c * std::log(xc)) * (1.0 + c * x) : 1.0;
+    jets.Tail[0] = 1.0 - complementPow(x, xc, c, 0)[0] * (1.0 + c * x);
   }
   return jets;
 }
