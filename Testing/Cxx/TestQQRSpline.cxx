@@ -821,6 +821,63 @@ TEST(QQRSpline, LocalInterpolationPassesThroughTheDataWithTangent320AndCurvature
   }
 }
 
+TEST(QQRSpline, PerKnotExponentsKeepC2ForTheControlPolygonCurveOpenAndClosed)
+{
+  std::mt19937 random(89);
+  std::uniform_real_distribution<double> exponent(3.2, 150.0);
+  for (const bool closed : { false, true })
+  {
+    const std::vector<Vec3> points = RandomPoints(10, random);
+    const int n = static_cast<int>(points.size());
+    const int spans = closed ? n : n - 1;
+    const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+    std::vector<double> kappa(n);
+    for (double& k : kappa)
+    {
+      k = exponent(random);
+    }
+    const QQRSpline curve = QQRSpline::approximate(points, t, closed, kappa);
+    double c2 = 0.0, thirdJump = 0.0;
+    for (int k = closed ? 0 : 1; k < spans; ++k)
+    {
+      const int previous = (k - 1 + spans) % spans;
+      const Derivatives left = curve.evaluateOnSpan(previous, t[previous + 1], 3);
+      const Derivatives right = curve.evaluateOnSpan(k, t[k], 3);
+      for (int m = 0; m <= 2; ++m)
+      {
+        c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(right[m].norm(), 1e-300));
+      }
+      thirdJump = std::max(thirdJump, (left[3] - right[3]).norm() / right[3].norm());
+      EXPECT_EQ(curve.exponents(k)[0], kappa[k]);
+      EXPECT_EQ(curve.exponents(previous)[1], kappa[k]);
+    }
+    std::printf("control polygon, %s, an exponent per knot in [3.2, 150]: C2 jumps %.1e, third %.2f\n",
+      closed ? "closed" : "open", c2, thirdJump);
+    EXPECT_LT(c2, 1e-9);
+    EXPECT_GT(thirdJump, 1e-3);
+  }
+  // Through fitPolyline, a closed line: the curve closes C2 at its seam and interpolates.
+  std::vector<Vec3> ring;
+  for (int i = 0; i < 12; ++i)
+  {
+    ring.emplace_back(std::cos(0.5 * i) * (1 + 0.3 * std::sin(1.5 * i)), std::sin(0.5 * i), 0.2 * std::cos(i));
+  }
+  FitOptions options;
+  options.Closed = true;
+  const FittedPolyline fit = fitPolyline(ring, options, qqrBuilder(QQROptions{}));
+  const Curve& spline = *fit.Spline;
+  const Derivatives seamLeft = spline.evaluateOnSpan(spline.numberOfSpans() - 1, spline.lastParameter(), 2);
+  const Derivatives seamRight = spline.evaluateOnSpan(0, spline.firstParameter(), 2);
+  for (int m = 0; m <= 2; ++m)
+  {
+    EXPECT_LT((seamLeft[m] - seamRight[m]).norm(), 1e-12 * std::max(1.0, seamRight[m].norm())) << m;
+  }
+  for (int k = 0; k < spline.numberOfSpans(); ++k)
+  {
+    EXPECT_LT((spline.evaluateOnSpan(k, spline.knots()[k], 0)[0] - fit.Data.Points[k]).norm(), 1e-14);
+  }
+}
+
 TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
 {
   // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)
@@ -933,6 +990,16 @@ TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
       {
         EXPECT_GE(spline.speedRatio(k), 1e-3) << name << " span " << k;
       }
+    }
+  }
+  // No exponent fixes Akima's straight run: the span leaving it has a Bezier
+  // point off the line (x_i P_i in S_{i-1}), whatever alpha (criterion (i)).
+  for (const bool interpolate : { true, false })
+  {
+    for (const double alpha : { 3.2, 4.0, 8.0, 13.5, 50.0, 200.0 })
+    {
+      const FittedPolyline fit = Fit(akima(), interpolate, false, alpha);
+      EXPECT_GE(fit.Audit.Failures[int(ShapeCriterion::Collinearity)], 1) << alpha;
     }
   }
   // What the guard prevents: raised far enough, RPN 15A "passes" the audit only
