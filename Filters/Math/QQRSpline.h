@@ -1,0 +1,210 @@
+// ShapeSplines math core: the quartic Bernstein-like (qqr) basis with two
+// exponential shape parameters and the cubic B-spline-like curves built on it
+// (paper 003, Wang & Zhang, AIMS Mathematics 5(5), 2020).
+#ifndef shapesplines_QQRSpline_h
+#define shapesplines_QQRSpline_h
+
+#include "FitPolyline.h"
+#include "GeneralizedCubicSpline.h" // Jet
+
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace shapesplines
+{
+/**
+ * The qqr basis of Definition 1, (2.1), at t in [0, 1]: A0 = (1-t)^alpha,
+ * A1 = alpha t (1-t)^(alpha-1), A3 = beta (1-t) t^(beta-1), A4 = t^beta and
+ * A2 = 1 - A0 - A1 - A3 - A4; entry [i][m] is the m-th derivative of A_i
+ * (m = 0..order, order <= 4; the others are left 0). alpha, beta >= 2
+ * (std::invalid_argument otherwise).
+ *
+ * A2 is evaluated without cancellation as G(t; alpha) - (A3 + A4) for
+ * t <= 1/2 (G(1-t; beta) - (A0 + A1) beyond), where
+ * G(t; a) = 1 - (1-t)^(a-1) (1 + (a-1) t) = a (a-1) int_0^t x (1-x)^(a-2) dx
+ * is summed as a series where it is small; its derivatives come from the
+ * integrand, and (1-t)^p is exp(p log1p(-t)) for t < 1/2 (t^p likewise), so
+ * nothing cancels and no p ulps are lost to 1 - t for alpha, beta up to 200
+ * and beyond (measured against long double: 6e-16 on values, 2e-14 on
+ * derivatives relative to the largest of the five).
+ *
+ * Where t^(beta-m) or (1-t)^(alpha-m) has a negative exponent at an end
+ * (beta < m at t = 0, alpha < m at t = 1), the m-th derivative there is
+ * unbounded and returned as +-inf; a zero coefficient (integer exponent)
+ * gives an exact 0.
+ *
+ * Decisions about the paper: the non-negativity of A2 (Theorem 1 (1), Lemma 1)
+ * only holds for alpha, beta >= 3: Lemma 1's F(t; 2) = -2 t^2 (1 - t) < 0, and
+ * for alpha = beta = 2 A2 = -2 t (1 - t). For alpha = beta = 3, A2 = 0 and the
+ * basis is the cubic Bernstein basis (not linearly independent as five
+ * functions). The second derivatives of Theorem 1 (5) need alpha, beta > 3.
+ */
+std::array<Jet, 5> qqrBasis(double t, double alpha, double beta, int order = 4);
+
+/// G(t; a) above and its derivatives 0..order (a >= 2, t in [0, 1]).
+Jet qqrTail(double t, double a, int order = 4);
+
+/**
+ * Local shape parameters x_i, y_i, z_i of the paper's choice just before its
+ * Figure 5, per knot interval i of h (h_i = u_{i+1} - u_i), read with exactly
+ * these indices (DESIGN.md section 5):
+ *   x_i = h_i / (4 (h_i + h_{i+1} + h_{i+2})),
+ *   y_i = h_{i+1} / (4 (h_{i-1} + h_i + h_{i+1})),
+ *   z_i = (2 h_i + h_{i+1}) / (2 (h_i + h_{i+1} + h_{i+2})).
+ * With alpha = beta = 4 they make the qqr B-splines the classical cubic
+ * B-splines. Entries whose intervals fall outside h are NaN.
+ */
+struct QQRLocalParameters
+{
+  std::vector<double> X, Y, Z;
+};
+QQRLocalParameters cubicLocalParameters(const std::vector<double>& h);
+
+/**
+ * The cubic B-spline-like (qqr B-spline) basis of Definition 3, (3.1), on knots
+ * u_0 < ... < u_m: B_i is B_{i,0}(t_i) on [u_i, u_{i+1}), B_{i,1}(t_{i+1}),
+ * B_{i,2}(t_{i+2}), B_{i,3}(t_{i+3}) and 0 outside [u_i, u_{i+4}) (the paper's
+ * text repeats B_{i,1}: a conversion typo), t_j = (u - u_j) / h_j.
+ * Global alpha, beta; local x, y, z per knot interval (index as h).
+ */
+class QQRBSplineBasis
+{
+public:
+  QQRBSplineBasis(std::vector<double> knots, double alpha, double beta, QQRLocalParameters local);
+
+  /// Number of basis functions B_0..B_{m-4}.
+  int size() const { return static_cast<int>(this->Knots.size()) - 4; }
+  const std::vector<double>& knots() const { return this->Knots; }
+
+  /// B_{i,piece}(t), piece 0..3, derivatives in t (0..order).
+  Jet piece(int i, int piece, double t, int order = 4) const;
+  /// B_i(u) and its derivatives in u. span: the knot interval u lies in (u may
+  /// be at either end of it; -1: found from u, right-continuous).
+  Jet value(int i, double u, int order = 4, int span = -1) const;
+
+  /// mu_i, upsilon_i, rho_i of section 3.1.
+  double mu(int i) const;
+  double upsilon(int i) const;
+  double rho(int i) const;
+
+private:
+  std::vector<double> Knots;
+  std::vector<double> H;
+  double Alpha, Beta;
+  QQRLocalParameters Local;
+};
+
+/// A curve's local shape parameters x, y, z: NaN, the paper's choice
+/// (cubicLocalParameters); a number, that value at every knot.
+struct QQRLocalShape
+{
+  double X = std::numeric_limits<double>::quiet_NaN();
+  double Y = std::numeric_limits<double>::quiet_NaN();
+  double Z = std::numeric_limits<double>::quiet_NaN();
+};
+
+/**
+ * Cubic B-spline-like curves (Definition 4, (3.7)) in the Bezier form of
+ * section 3.4, (3.8): on each span the qqr curve (2.5) with Bezier points
+ * T_{i-2}, upsilon_{i-1} S_{i-2} + mu_{i-1} R_{i-2,i-1}, R_{i-2,i-1},
+ * upsilon_i R_{i-2,i-1} + mu_i S_{i-1}, T_{i-1} (the paper's S_{i-1} has a_i
+ * for x_i, and its last term A_3 for A_4: typos).
+ *
+ * Indexing (decision): the curve's knots are the data parameters t_0 < ... <
+ * t_N, data point D_k sits at the paper's knot u_{k+2} and is the control point
+ * P_k; the open ends double the end points, P_{-1} = P_0 and P_{N+1} = P_N, as
+ * section 3.6 does, so that there is one span per pair of neighbouring data
+ * points. The knot intervals beyond the data that the formulas need mirror the
+ * ones inside (h_{-1} = h_0, h_{-2} = h_1, ...); closed curves wrap around.
+ *
+ * Exponents: per span k a left exponent alpha_k and a right one beta_k. The
+ * joins are C1 (and C2) when beta_{k-1} = alpha_k (paper's alpha = beta; the
+ * derivation of Theorem 8 only pairs the two exponents that meet at a knot),
+ * so a per-knot exponent kappa_j (alpha_k = kappa_k, beta_k = kappa_{k+1}) keeps
+ * C2 with a different exponent at every knot (> 3, see qqrBasis). With
+ * alpha != beta everywhere the curve is G1 only (continuous tangent direction,
+ * speed ratio beta / alpha).
+ */
+class QQRSpline final : public Curve
+{
+public:
+  using Local = QQRLocalShape;
+
+  /**
+   * Approximation: the points are the control polygon (one per knot, the open
+   * ends doubled), the curve is (3.7) with global alpha, beta (>= 2) or one
+   * exponent per point (alpha = beta at that knot; points.size() values).
+   */
+  static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+    bool closed, double alpha, double beta, const Local& local = {});
+  static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+    bool closed, const std::vector<double>& knotExponents, const Local& local = {});
+
+  /**
+   * Local interpolation of section 3.6: x and y from (3.18) so that Q(u_i) is
+   * the data point, the tangent is (3.20) and the second derivative (3.21); no
+   * system is solved. local.X and local.Y are ignored, local.Z (NaN: the
+   * paper's z_i) is the free bias. (3.18) as printed lacks a factor 1/2 in
+   * x_{i-1}: with it, Q(u_i) = P_{i-2} and (3.20) hold (checked in the tests);
+   * without it, neither does. So x_{i-1} = -h_{i-1} z_{i-1} / (2 h_i),
+   * y_{i-1} = -h_i (1 - z_{i-2}) / (2 h_{i-1}).
+   */
+  static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+    bool closed, double alpha, double beta, const Local& local = {});
+  static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+    bool closed, const std::vector<double>& knotExponents, const Local& local = {});
+
+  Derivatives evaluateOnSpan(int span, double t, int order) const override;
+  /// "Alpha" per span: the larger of its two exponents.
+  std::vector<SpanParameter> spanParameters() const override;
+
+  /// The five Bezier points of a span (the qqr curve (2.5) on it).
+  const std::array<Vec3, 5>& bezier(int span) const { return this->Bezier[span]; }
+  /// The smallest speed |Q'| h on a span (65 samples) relative to the length
+  /// of its Bezier polygon: ~1 for a regular span, ~alpha^2 2^-alpha for large
+  /// exponents, where the span approaches a corner at its middle Bezier point.
+  double speedRatio(int span) const;
+  /// Left and right exponent of a span.
+  const std::array<double, 2>& exponents(int span) const { return this->Exponents[span]; }
+
+private:
+  QQRSpline(std::vector<double> knots, bool closed);
+  static QQRSpline build(const std::vector<Vec3>& points, const std::vector<double>& knots,
+    bool closed, std::vector<std::array<double, 2>> exponents, const Local& local, bool interpolate);
+
+  std::vector<std::array<Vec3, 5>> Bezier;
+  std::vector<std::array<double, 2>> Exponents;
+};
+
+struct QQROptions
+{
+  bool Interpolate = true; ///< local interpolation (3.18)-(3.21); false: the data are the control polygon
+  /// Raise alpha = beta at the knots of spans where the shape audit fails,
+  /// from Alpha, until none fails or MaxAlpha is reached.
+  bool Automatic = true;
+  double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
+  /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
+  /// interpolation takes x and y from (3.18) and ignores X and Y.
+  double X = std::numeric_limits<double>::quiet_NaN();
+  double Y = std::numeric_limits<double>::quiet_NaN();
+  double Z = std::numeric_limits<double>::quiet_NaN();
+  int MaxRounds = 64;
+};
+
+/// The exponent after one more round of the automatic mode (capped at maxAlpha).
+double raisedQQRExponent(double alpha, double maxAlpha);
+
+/**
+ * Builder of qqr B-spline-like curves for fitPolyline: interpolation or the
+ * data as control polygon (its shape reference then being the data polygon),
+ * fixed exponents or automatic. Per-point values (PointValues) are ignored.
+ * Automatic: alpha = beta per knot, raised (raisedQQRExponent) at both knots
+ * of every failing span through preserveShape, except where a raise would make
+ * a span irregular (speedRatio below 1e-3: undone, the knots frozen); the
+ * curve returned is the regular one with the fewest failing spans seen.
+ */
+CurveBuilder qqrBuilder(const QQROptions& options);
+} // namespace shapesplines
+
+#endif

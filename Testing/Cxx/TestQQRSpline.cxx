@@ -1,0 +1,1094 @@
+// Quartic Bernstein-like (qqr) basis and cubic B-spline-like curves (paper 003):
+// Theorem 1, the B-spline basis (Theorems 5, 6, 8, 10), the reduction to the
+// classical cubic B-splines, the Bezier form, the local interpolation of
+// section 3.6, the automatic mode on the shape data sets and the helix.
+#include "QQRSpline.h"
+#include "MathTestUtilities.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+
+using namespace shapesplines;
+using namespace shapesplines::test;
+
+namespace
+{
+using LongJet = std::array<long double, 5>;
+
+/// d^m/dx^m x^p in long double, x > 0.
+long double powDerivative(long double x, long double p, int m)
+{
+  long double factor = 1;
+  for (int j = 0; j < m; ++j)
+  {
+    factor *= p - j;
+  }
+  return factor == 0 ? 0 : factor * std::pow(x, p - m);
+}
+
+/// The qqr basis and its derivatives straight from (2.1), in long double, 0 < t < 1:
+/// A1 = alpha (s^(alpha-1) - s^alpha), A3 = beta (t^(beta-1) - t^beta), A2 = 1 - the others.
+std::array<LongJet, 5> referenceBasis(long double t, long double alpha, long double beta)
+{
+  const long double s = 1 - t;
+  std::array<LongJet, 5> a{};
+  for (int m = 0; m < 5; ++m)
+  {
+    const long double sign = m % 2 == 0 ? 1 : -1;
+    a[0][m] = sign * powDerivative(s, alpha, m);
+    a[1][m] = sign * alpha * (powDerivative(s, alpha - 1, m) - powDerivative(s, alpha, m));
+    a[3][m] = beta * (powDerivative(t, beta - 1, m) - powDerivative(t, beta, m));
+    a[4][m] = powDerivative(t, beta, m);
+    a[2][m] = (m == 0 ? 1 : 0) - a[0][m] - a[1][m] - a[3][m] - a[4][m];
+  }
+  return a;
+}
+
+const std::vector<double> ShapeGrid = { 2.0, 2.5, 3.0, 3.7, 4.0, 5.5, 10.0, 37.0, 100.0, 200.0 };
+
+/// The largest |A_j^(m)| over j: the scale of the m-th derivatives at t.
+double derivativeScale(const std::array<Jet, 5>& a, int m)
+{
+  double scale = 0.0;
+  for (const Jet& j : a)
+  {
+    scale = std::max(scale, std::abs(j[m]));
+  }
+  return scale;
+}
+} // namespace
+
+TEST(QQRBasis, Theorem1PartitionOfUnitySymmetryAndDerivativesOnAGrid)
+{
+  double largestValueError = 0.0, largestDerivativeError = 0.0;
+  for (const double alpha : ShapeGrid)
+  {
+    for (const double beta : ShapeGrid)
+    {
+      for (int k = 0; k <= 128; ++k)
+      {
+        const double t = k / 128.0; // dyadic: 1 - t is exact, so the mirror point is too
+        const auto a = qqrBasis(t, alpha, beta);
+        // (2) Partition of unity, and the derivatives sum to 0.
+        double sum = 0.0;
+        for (const Jet& j : a)
+        {
+          sum += j[0];
+        }
+        ASSERT_NEAR(sum, 1.0, 1e-15) << alpha << " " << beta << " t " << t;
+        for (int m = 1; m < 5; ++m)
+        {
+          double derivativeSum = 0.0;
+          for (const Jet& j : a)
+          {
+            derivativeSum += j[m];
+          }
+          const double scale = derivativeScale(a, m);
+          if (std::isfinite(scale))
+          {
+            ASSERT_LE(std::abs(derivativeSum), 1e-13 * scale + 1e-300) << alpha << " " << beta << " t " << t << " m " << m;
+          }
+        }
+        // (3) Symmetry A_i(t; alpha, beta) = A_{4-i}(1 - t; beta, alpha), for every i
+        // (the paper states i = 0, 1; A2 follows), derivatives with (-1)^m.
+        const auto mirrored = qqrBasis(1.0 - t, beta, alpha);
+        for (int i = 0; i < 5; ++i)
+        {
+          for (int m = 0; m < 5; ++m)
+          {
+            const double expected = (m % 2 == 0 ? 1 : -1) * mirrored[4 - i][m];
+            if (std::isinf(expected))
+            {
+              ASSERT_EQ(a[i][m], expected);
+              continue;
+            }
+            ASSERT_NEAR(a[i][m], expected, 4e-16 * std::max(1.0, derivativeScale(a, m)))
+              << "A" << i << " m " << m << " " << alpha << " " << beta << " t " << t;
+          }
+        }
+        // Values and derivatives against long double on the open interval.
+        if (k == 0 || k == 128)
+        {
+          continue;
+        }
+        const auto reference = referenceBasis(t, alpha, beta);
+        for (int m = 0; m < 5; ++m)
+        {
+          // (A floor above the subnormal range, where t^(beta-4) ends up for beta = 200.)
+          const double scale = std::max(derivativeScale(a, m), 1e-280);
+          for (int i = 0; i < 5; ++i)
+          {
+            const double error = std::abs(a[i][m] - static_cast<double>(reference[i][m])) / scale;
+            (m == 0 ? largestValueError : largestDerivativeError) =
+              std::max(m == 0 ? largestValueError : largestDerivativeError, error);
+            ASSERT_LE(error, m == 0 ? 1e-15 : 1e-13)
+              << "A" << i << " m " << m << " alpha " << alpha << " beta " << beta << " t " << t;
+          }
+        }
+      }
+    }
+  }
+  std::printf("qqr basis against long double, alpha, beta in [2, 200]: values %.2g, "
+              "derivatives 1..4 %.2g (relative to the largest of the five)\n",
+    largestValueError, largestDerivativeError);
+}
+
+TEST(QQRBasis, DerivativesAgreeWithFiniteDifferences)
+{
+  for (const double alpha : { 2.0, 3.7, 4.0, 10.0, 200.0 })
+  {
+    for (const double beta : { 2.5, 4.0, 37.0, 200.0 })
+    {
+      for (const double t : { 0.013, 0.2, 0.5, 0.77, 0.987 })
+      {
+        const double step = 1e-5 / std::max(alpha, beta);
+        const auto above = qqrBasis(t + step, alpha, beta);
+        const auto below = qqrBasis(t - step, alpha, beta);
+        const auto here = qqrBasis(t, alpha, beta);
+        for (int m = 1; m < 5; ++m)
+        {
+          const double scale = derivativeScale(here, m);
+          for (int i = 0; i < 5; ++i)
+          {
+            const double difference = (above[i][m - 1] - below[i][m - 1]) / (2 * step);
+            EXPECT_NEAR(difference, here[i][m], 1e-5 * scale + 1e-9 * derivativeScale(here, m - 1) / step)
+              << "A" << i << " m " << m << " " << alpha << " " << beta << " t " << t;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(QQRBasis, Theorem1EndPointValuesWithTheirRangeOfValidity)
+{
+  for (const double alpha : ShapeGrid)
+  {
+    for (const double beta : ShapeGrid)
+    {
+      const auto a0 = qqrBasis(0.0, alpha, beta);
+      const auto a1 = qqrBasis(1.0, alpha, beta);
+      // Values: A0(0) = A4(1) = 1, all others 0 at both ends.
+      for (int i = 0; i < 5; ++i)
+      {
+        EXPECT_EQ(a0[i][0], i == 0 ? 1.0 : 0.0) << i << " " << alpha << " " << beta;
+        EXPECT_EQ(a1[i][0], i == 4 ? 1.0 : 0.0) << i << " " << alpha << " " << beta;
+      }
+      // First derivatives: A0'(0) = -alpha, A1'(0) = alpha, A3'(1) = -beta, A4'(1) = beta.
+      // The paper's zeros for A3'(0), A2'(0) (A1'(1), A2'(1)) need beta > 2 (alpha > 2):
+      // for beta = 2, A3 = 2 t (1 - t) and A3'(0) = 2, A2'(0) = -2.
+      const double tolerance = 1e-12 * alpha * beta;
+      EXPECT_NEAR(a0[0][1], -alpha, tolerance);
+      EXPECT_NEAR(a0[1][1], alpha, tolerance);
+      EXPECT_NEAR(a0[3][1], beta == 2.0 ? 2.0 : 0.0, tolerance) << beta;
+      EXPECT_NEAR(a0[2][1], beta == 2.0 ? -2.0 : 0.0, tolerance) << beta;
+      EXPECT_EQ(a0[4][1], 0.0);
+      EXPECT_NEAR(a1[4][1], beta, tolerance);
+      EXPECT_NEAR(a1[3][1], -beta, tolerance);
+      EXPECT_NEAR(a1[1][1], alpha == 2.0 ? -2.0 : 0.0, tolerance) << alpha;
+      EXPECT_NEAR(a1[2][1], alpha == 2.0 ? 2.0 : 0.0, tolerance) << alpha;
+      EXPECT_EQ(a1[0][1], 0.0);
+      // Second derivatives as listed, for alpha, beta > 3 (the paper says > 2:
+      // below 3, A3''(0) = beta (beta-1) (beta-2) t^(beta-3) is unbounded).
+      if (alpha > 3.0 && beta > 3.0)
+      {
+        const double t2 = 1e-12 * alpha * alpha * beta * beta;
+        EXPECT_NEAR(a0[0][2], alpha * alpha - alpha, t2);
+        EXPECT_NEAR(a0[1][2], 2 * alpha * (1 - alpha), t2);
+        EXPECT_NEAR(a0[2][2], alpha * alpha - alpha, t2);
+        EXPECT_EQ(a0[3][2], 0.0);
+        EXPECT_EQ(a0[4][2], 0.0);
+        EXPECT_EQ(a1[0][2], 0.0);
+        EXPECT_EQ(a1[1][2], 0.0);
+        EXPECT_NEAR(a1[2][2], beta * beta - beta, t2);
+        EXPECT_NEAR(a1[3][2], 2 * beta * (1 - beta), t2);
+        EXPECT_NEAR(a1[4][2], beta * beta - beta, t2);
+      }
+      if (beta == 3.0)
+      {
+        EXPECT_NEAR(a0[3][2], 6.0, 1e-12);
+        EXPECT_NEAR(a0[2][2], alpha * alpha - alpha - 6.0, 1e-12 * alpha * alpha);
+      }
+      if (beta > 2.0 && beta < 3.0)
+      {
+        EXPECT_TRUE(std::isinf(a0[3][2])) << beta;
+      }
+      if (beta == 2.0)
+      {
+        EXPECT_EQ(a0[3][2], -4.0); // A3 = 2 (t - t^2)
+      }
+    }
+  }
+}
+
+TEST(QQRBasis, NonNegativeForExponentsFromThreeButNotFromTwo)
+{
+  // Theorem 1 (1) and Lemma 1 claim alpha, beta >= 2; Lemma 1's F(t; 2) =
+  // -2 t^2 (1 - t) < 0, and F(t; lambda) >= F(t; 3) = 0 only from 3 on.
+  double lowest = 0.0;
+  for (const double alpha : ShapeGrid)
+  {
+    for (const double beta : ShapeGrid)
+    {
+      for (int k = 0; k <= 200; ++k)
+      {
+        const double t = k / 200.0;
+        const auto a = qqrBasis(t, alpha, beta);
+        for (int i : { 0, 1, 3, 4 })
+        {
+          ASSERT_GE(a[i][0], 0.0);
+        }
+        if (alpha >= 3.0 && beta >= 3.0)
+        {
+          ASSERT_GE(a[2][0], -3e-16) << alpha << " " << beta << " t " << t;
+        }
+        lowest = std::min(lowest, a[2][0]);
+        if (alpha == 2.0 && beta == 2.0)
+        {
+          ASSERT_NEAR(a[2][0], -2.0 * t * (1.0 - t), 3e-16);
+        }
+        if (alpha == 3.0 && beta == 3.0)
+        {
+          // A2 = 0: the cubic Bernstein basis (and no linear independence).
+          ASSERT_NEAR(a[2][0], 0.0, 3e-16);
+          ASSERT_NEAR(a[1][0], 3 * t * (1 - t) * (1 - t), 1e-15);
+        }
+        if (alpha == 4.0 && beta == 4.0)
+        {
+          // Remark 1: the quartic Bernstein basis.
+          ASSERT_NEAR(a[2][0], 6 * t * t * (1 - t) * (1 - t), 1e-15);
+        }
+      }
+    }
+  }
+  EXPECT_LT(lowest, -0.2); // the paper's claim fails for exponents below 3
+  std::printf("lowest A2 over alpha, beta in [2, 200]: %.3f (alpha = beta = 2: -2 t (1 - t))\n", lowest);
+}
+
+TEST(QQRBasis, NoCancellationNearTheEndsUpToExponent200)
+{
+  // A2 ~ alpha (alpha - 1) t^2 / 2 near t = 0: 1 - A0 - A1 - A3 - A4 would keep
+  // only eps / t^2 of it. Reference: the binomial tail sum_{k>=2} C(a, k) t^k
+  // (1 - t)^(a-k) (all terms positive) for integer a, in long double.
+  for (const int a : { 4, 10, 50, 200 })
+  {
+    for (const double t : { 1e-9, 1e-6, 1e-4, 1e-2, 0.3 })
+    {
+      long double tail = 0, binomial = 1;
+      for (int k = 0; k <= a; ++k)
+      {
+        if (k >= 2)
+        {
+          tail += binomial * std::pow(static_cast<long double>(t), k) *
+            std::pow(1 - static_cast<long double>(t), a - k);
+        }
+        binomial = binomial * (a - k) / (k + 1);
+      }
+      const double g = qqrTail(t, a, 0)[0];
+      EXPECT_NEAR(g, static_cast<double>(tail), 1e-15 * static_cast<double>(tail)) << a << " " << t;
+      // A2 = G(t; alpha) - (A3 + A4); A3 + A4 is ~t^(beta-1), negligible or exact here.
+      const auto basis = qqrBasis(t, a, 200.0);
+      EXPECT_NEAR(basis[2][0], static_cast<double>(tail), 1e-15 * static_cast<double>(tail)) << a << " " << t;
+    }
+  }
+}
+
+namespace
+{
+/// Cox-de Boor: the m-th derivative of the cubic B-spline N_{i,3} on knots u at
+/// u, inside knot interval `span` (one-sided at its ends).
+double coxDeBoor(const std::vector<double>& u, int i, int degree, int m, int span, double x)
+{
+  if (m > degree)
+  {
+    return 0.0;
+  }
+  if (degree == 0)
+  {
+    return i == span ? 1.0 : 0.0;
+  }
+  if (m > 0)
+  {
+    const double left = degree * coxDeBoor(u, i, degree - 1, m - 1, span, x) / (u[i + degree] - u[i]);
+    const double right = degree * coxDeBoor(u, i + 1, degree - 1, m - 1, span, x) / (u[i + degree + 1] - u[i + 1]);
+    return left - right;
+  }
+  return (x - u[i]) / (u[i + degree] - u[i]) * coxDeBoor(u, i, degree - 1, 0, span, x) +
+    (u[i + degree + 1] - x) / (u[i + degree + 1] - u[i + 1]) * coxDeBoor(u, i + 1, degree - 1, 0, span, x);
+}
+
+std::vector<double> RandomKnots(int count, std::mt19937& random, double spread)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> knots = { 0.0 };
+  for (int i = 1; i < count; ++i)
+  {
+    knots.push_back(knots.back() + 1.0 + spread * (unit(random) - 0.5));
+  }
+  return knots;
+}
+
+std::vector<double> Intervals(const std::vector<double>& knots)
+{
+  std::vector<double> h;
+  for (size_t i = 0; i + 1 < knots.size(); ++i)
+  {
+    h.push_back(knots[i + 1] - knots[i]);
+  }
+  return h;
+}
+
+/// Random local parameters satisfying (3.3) strictly: x, y > 0, x + y < 1, 0 < z < 1.
+QQRLocalParameters RandomLocal(int m, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> unit(0.05, 0.45);
+  std::uniform_real_distribution<double> bias(0.1, 0.9);
+  QQRLocalParameters local;
+  for (int i = 0; i < m; ++i)
+  {
+    local.X.push_back(unit(random));
+    local.Y.push_back(unit(random));
+    local.Z.push_back(bias(random));
+  }
+  return local;
+}
+
+/// Derivatives of B_i at knot j from the left and from the right.
+std::pair<Jet, Jet> AtKnot(const QQRBSplineBasis& basis, int i, int j)
+{
+  const double u = basis.knots()[j];
+  const int spans = static_cast<int>(basis.knots().size()) - 1;
+  const Jet left = j > 0 ? basis.value(i, u, 4, j - 1) : Jet{};
+  const Jet right = j < spans ? basis.value(i, u, 4, j) : Jet{};
+  return { left, right };
+}
+} // namespace
+
+TEST(QQRBSplineBasis, Theorem5PartitionOfUnityAndTheorem6Positivity)
+{
+  std::mt19937 random(5);
+  for (const double spread : { 0.0, 1.6 })
+  {
+    for (const auto& [alpha, beta] : std::vector<std::pair<double, double>>{
+           { 3.0, 3.0 }, { 4.0, 4.0 }, { 3.5, 9.0 }, { 7.5, 7.5 }, { 50.0, 20.0 }, { 200.0, 200.0 } })
+    {
+      const std::vector<double> knots = RandomKnots(13, random, spread); // n = 8
+      const QQRBSplineBasis basis(knots, alpha, beta, RandomLocal(12, random));
+      const int n = basis.size() - 1;
+      for (int span = 3; span <= n; ++span)
+      {
+        for (int s = 0; s <= 20; ++s)
+        {
+          const double u = knots[span] + s / 20.0 * (knots[span + 1] - knots[span]);
+          double sum = 0.0;
+          for (int i = 0; i <= n; ++i)
+          {
+            const double b = basis.value(i, u, 0, span)[0];
+            sum += b;
+            ASSERT_GE(b, 0.0) << i << " at " << u;
+            // Theorem 6: B_i > 0 inside its support (where t^beta does not underflow).
+            if (span >= i && span <= i + 3 && s >= 2 && s <= 18)
+            {
+              ASSERT_GT(b, 0.0) << "B_" << i << " at " << u << " alpha " << alpha << " beta " << beta;
+            }
+            if (span < i || span > i + 3)
+            {
+              ASSERT_EQ(b, 0.0);
+            }
+          }
+          ASSERT_NEAR(sum, 1.0, 1e-15) << "u " << u << " alpha " << alpha << " beta " << beta;
+        }
+      }
+    }
+  }
+  // Exponents below 3 break Theorem 6 even with (3.3), once the knots are
+  // non-uniform (A2 < 0 enters B_{i,1}, B_{i,2}); from 3 on it holds.
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const double alpha : { 2.0, 2.5, 3.0, 4.0, 10.0 })
+  {
+    std::mt19937 search(7);
+    double lowest = 1.0;
+    for (int trial = 0; trial < 300; ++trial)
+    {
+      std::vector<double> knots = { 0.0 };
+      QQRLocalParameters local;
+      for (int i = 0; i < 8; ++i)
+      {
+        knots.push_back(knots.back() + std::exp(3.0 * (unit(search) - 0.5)));
+        double x = unit(search), y = unit(search) * (1.0 - x);
+        if (unit(search) < 0.5)
+        {
+          std::swap(x, y);
+        }
+        local.X.push_back(x);
+        local.Y.push_back(y);
+        local.Z.push_back(unit(search));
+      }
+      const QQRBSplineBasis basis(knots, alpha, alpha, local);
+      for (int s = 0; s <= 200; ++s)
+      {
+        lowest = std::min(lowest, basis.value(2, knots[2] + s / 200.0 * (knots[6] - knots[2]), 0)[0]);
+      }
+    }
+    std::printf("alpha = beta = %g, local parameters satisfying (3.3), random knots: lowest B_2 %.3g\n",
+      alpha, lowest);
+    if (alpha < 3.0)
+    {
+      EXPECT_LT(lowest, -1e-2) << alpha;
+    }
+    else
+    {
+      EXPECT_GE(lowest, -1e-16) << alpha;
+    }
+  }
+}
+
+TEST(QQRBSplineBasis, Theorem8C2ForEqualExponentsAboveThreeAndG1Otherwise)
+{
+  std::mt19937 random(8);
+  for (const double alpha : { 3.2, 4.0, 7.0, 25.0, 200.0, 3.0, 2.5 })
+  {
+    const std::vector<double> knots = RandomKnots(14, random, 1.6);
+    const QQRBSplineBasis basis(knots, alpha, alpha, RandomLocal(13, random));
+    double largest[5] = {};
+    for (int i = 0; i < basis.size(); ++i)
+    {
+      for (int j = i; j <= i + 4; ++j)
+      {
+        const auto [left, right] = AtKnot(basis, i, j);
+        for (int m = 0; m <= 3; ++m)
+        {
+          // Relative to the scale of B_i's m-th derivative, 1 / h^m.
+          const double scale = std::max({ std::abs(left[m]), std::abs(right[m]), std::pow(knots[j + 1 < (int)knots.size() ? j + 1 : j] - knots[j > 0 ? j - 1 : j], -m) * 1e-2 });
+          const double jump = std::isfinite(left[m] - right[m]) ? std::abs(left[m] - right[m]) / scale : INFINITY;
+          largest[m] = std::max(largest[m], jump);
+        }
+      }
+    }
+    std::printf("alpha = beta = %g: relative jumps at the knots, orders 0..3: %.1e %.1e %.1e %.1e\n",
+      alpha, largest[0], largest[1], largest[2], largest[3]);
+    EXPECT_LE(largest[0], 1e-12);
+    EXPECT_LE(largest[1], 1e-12);
+    if (alpha > 3.0)
+    {
+      EXPECT_LE(largest[2], 1e-9) << alpha;
+      EXPECT_GT(largest[3], 1e-3) << alpha << ": only C2 is claimed, the third derivative jumps";
+    }
+    else
+    {
+      // The paper says alpha = beta in (2, inf): at 3, A3''(0) = 6 breaks the
+      // second derivative's join; below 3 it is unbounded at the knots.
+      EXPECT_GT(largest[2], 1e-2) << alpha;
+    }
+  }
+  // alpha != beta: the tangents at a knot agree in direction only: B'(u+) / alpha = B'(u-) / beta.
+  const std::vector<double> knots = RandomKnots(12, random, 1.6);
+  const double alpha = 5.0, beta = 9.0;
+  const QQRBSplineBasis basis(knots, alpha, beta, RandomLocal(11, random));
+  double largestG1 = 0.0, largestC1 = 0.0;
+  for (int i = 0; i < basis.size(); ++i)
+  {
+    for (int j = i + 1; j <= i + 3; ++j)
+    {
+      const auto [left, right] = AtKnot(basis, i, j);
+      largestG1 = std::max(largestG1, std::abs(right[1] / alpha - left[1] / beta));
+      largestC1 = std::max(largestC1, std::abs(right[1] - left[1]));
+    }
+  }
+  EXPECT_LT(largestG1, 1e-13);
+  EXPECT_GT(largestC1, 1e-2);
+}
+
+TEST(QQRBSplineBasis, ReducesToTheClassicalCubicBSplineWithThePapersLocalParameters)
+{
+  std::mt19937 random(13);
+  for (const double spread : { 0.0, 0.8, 1.9 })
+  {
+    const std::vector<double> knots = RandomKnots(15, random, spread);
+    const std::vector<double> h = Intervals(knots);
+    const QQRBSplineBasis basis(knots, 4.0, 4.0, cubicLocalParameters(h));
+    double largest = 0.0, fourth = 0.0;
+    for (int i = 0; i < basis.size(); ++i)
+    {
+      for (int span = i; span <= i + 3; ++span)
+      {
+        for (int s = 0; s <= 10; ++s)
+        {
+          const double u = knots[span] + s / 10.0 * h[span];
+          const Jet b = basis.value(i, u, 4, span);
+          for (int m = 0; m <= 3; ++m)
+          {
+            const double scale = std::pow(h[span], -m);
+            largest = std::max(largest, std::abs(b[m] - coxDeBoor(knots, i, 3, m, span, u)) / scale);
+          }
+          fourth = std::max(fourth, std::abs(b[4]) * std::pow(h[span], 4));
+        }
+      }
+    }
+    std::printf("knot spread %.1f: qqr (alpha = beta = 4) minus cubic B-spline, derivatives 0..3: "
+                "%.1e; 4th derivative %.1e\n",
+      spread, largest, fourth);
+    EXPECT_LT(largest, 1e-12) << spread;
+    EXPECT_LT(fourth, 1e-11) << spread;
+    if (spread > 0.0)
+    {
+      // Read with the index of x, y, z shifted by one, it is not the cubic B-spline.
+      QQRLocalParameters shifted = cubicLocalParameters(h);
+      std::rotate(shifted.X.begin(), shifted.X.begin() + 1, shifted.X.end());
+      std::rotate(shifted.Y.begin(), shifted.Y.begin() + 1, shifted.Y.end());
+      std::rotate(shifted.Z.begin(), shifted.Z.begin() + 1, shifted.Z.end());
+      const QQRBSplineBasis wrong(knots, 4.0, 4.0, shifted);
+      double difference = 0.0;
+      for (int i = 1; i + 2 < wrong.size(); ++i)
+      {
+        for (int span = i; span <= i + 3; ++span)
+        {
+          const double u = knots[span] + 0.5 * h[span];
+          difference = std::max(difference, std::abs(wrong.value(i, u, 0, span)[0] - coxDeBoor(knots, i, 3, 0, span, u)));
+        }
+      }
+      EXPECT_GT(difference, 1e-3) << spread;
+    }
+  }
+}
+
+TEST(QQRBSplineBasis, Theorem10KnotValuesAndTheCorrectedLocalInterpolationConditions)
+{
+  std::mt19937 random(21);
+  std::uniform_real_distribution<double> value(-1.0, 1.0);
+  std::uniform_real_distribution<double> bias(0.1, 0.9);
+  const std::vector<double> knots = RandomKnots(14, random, 1.6);
+  const std::vector<double> h = Intervals(knots);
+  const int m = static_cast<int>(h.size());
+  for (const double alpha : { 3.5, 4.0, 12.0 })
+  {
+    // Theorem 10 (3) for arbitrary local parameters (its Q'' with z_{i-2} in the first term).
+    const QQRLocalParameters local = RandomLocal(m, random);
+    const QQRBSplineBasis basis(knots, alpha, alpha, local);
+    std::vector<double> p(basis.size());
+    for (double& v : p)
+    {
+      v = value(random);
+    }
+    const auto& [x, y, z] = local;
+    double largest = 0.0, withPrintedIndex = 0.0;
+    for (int i = 3; i <= basis.size(); ++i)
+    {
+      Jet q{};
+      for (int j = i - 3; j <= i - 1; ++j)
+      {
+        const Jet b = basis.value(j, knots[i], 2, i);
+        for (int d = 0; d <= 2; ++d)
+        {
+          q[d] += b[d] * p[j];
+        }
+      }
+      const double mu = basis.mu(i - 1), up = basis.upsilon(i - 1), sum = h[i - 1] + h[i];
+      const double value0 = up * (2 * mu * y[i - 1] + up * (1 - z[i - 2])) * p[i - 3] +
+        basis.rho(i - 2) * p[i - 2] + mu * (mu * z[i - 1] + 2 * up * x[i - 1]) * p[i - 1];
+      const double value1 = alpha / sum *
+        (((2 * mu - 1) * y[i - 1] + up * (1 - z[i - 2])) * (p[i - 2] - p[i - 3]) +
+          ((1 - 2 * mu) * x[i - 1] + mu * z[i - 1]) * (p[i - 1] - p[i - 2]));
+      auto second = [&](double zFirst) {
+        return (alpha * alpha - alpha) / (sum * sum) *
+          ((2 * y[i - 1] + zFirst - 1) * (p[i - 2] - p[i - 3]) + (z[i - 1] - 2 * x[i - 1]) * (p[i - 1] - p[i - 2]));
+      };
+      largest = std::max({ largest, std::abs(q[0] - value0), std::abs(q[1] - value1) * sum,
+        std::abs(q[2] - second(z[i - 2])) * sum * sum / (alpha * alpha) });
+      withPrintedIndex = std::max(withPrintedIndex, std::abs(q[2] - second(z[i - 1])) * sum * sum / (alpha * alpha));
+    }
+    EXPECT_LT(largest, 1e-13) << alpha;
+    EXPECT_GT(withPrintedIndex, 1e-3) << alpha << ": the printed z_{i-1} should not fit";
+
+    // (3.18) as corrected, x_{i-1} = -h_{i-1} z_{i-1} / (2 h_i): Q(u_i) = P_{i-2}.
+    // As printed (no 1/2), it does not interpolate.
+    for (const bool printed : { false, true })
+    {
+      QQRLocalParameters interpolating{ std::vector<double>(m, 0.0), std::vector<double>(m, 0.0),
+        std::vector<double>(m) };
+      for (double& v : interpolating.Z)
+      {
+        v = bias(random);
+      }
+      for (int j = 1; j + 1 < m; ++j)
+      {
+        interpolating.X[j] = -(printed ? 1.0 : 0.5) * h[j] / h[j + 1] * interpolating.Z[j];
+        interpolating.Y[j] = -0.5 * h[j + 1] / h[j] * (1 - interpolating.Z[j - 1]);
+      }
+      const QQRBSplineBasis local2(knots, alpha, alpha, interpolating);
+      double miss = 0.0;
+      for (int i = 3; i <= local2.size(); ++i)
+      {
+        double q = 0.0;
+        for (int j = i - 3; j <= i - 1; ++j)
+        {
+          q += local2.value(j, knots[i], 0, i)[0] * p[j];
+        }
+        miss = std::max(miss, std::abs(q - p[i - 2]));
+      }
+      if (printed)
+      {
+        EXPECT_GT(miss, 1e-2) << alpha;
+      }
+      else
+      {
+        EXPECT_LT(miss, 1e-14) << alpha;
+      }
+    }
+  }
+}
+
+namespace
+{
+/// The paper's knot vector behind a QQRSpline on data knots t_0..t_N (open):
+/// u_2 = t_0, the intervals beyond the data mirrored (the class's decision),
+/// stored from the paper's index -1 on (entry p + 1 is u_p), up to u_{N+5}.
+std::vector<double> PaperKnots(const std::vector<double>& t)
+{
+  const int spans = static_cast<int>(t.size()) - 1;
+  auto dh = [&](int j) {
+    j = j < 0 ? -1 - j : (j >= spans ? 2 * spans - 1 - j : j);
+    return t[j + 1] - t[j];
+  };
+  std::vector<double> u(spans + 7);
+  u[3] = t[0]; // paper u_2
+  for (int p = 3; p <= spans + 5; ++p)
+  {
+    u[p + 1] = u[p] + dh(p - 3); // h_{p-1} = dh_{p-3}
+  }
+  for (int p = 1; p >= -1; --p)
+  {
+    u[p + 1] = u[p + 2] - dh(p - 2); // h_p = dh_{p-2}
+  }
+  return u;
+}
+
+std::vector<Vec3> RandomPoints(int count, std::mt19937& random)
+{
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i)
+  {
+    points.emplace_back(unit(random), unit(random), unit(random));
+  }
+  return points;
+}
+} // namespace
+
+TEST(QQRSpline, BezierFormEqualsTheBSplineCurveAndReducesToTheCubicBSplineCurve)
+{
+  std::mt19937 random(34);
+  const std::vector<Vec3> points = RandomPoints(9, random);
+  const std::vector<double> t = RandomKnots(9, random, 1.5);
+  const int spans = 8;
+  const std::vector<double> u = PaperKnots(t);
+  for (const auto& [alpha, beta, local] : std::vector<std::tuple<double, double, QQRLocalShape>>{
+         { 3.5, 9.0, QQRLocalShape{ 0.1, 0.3, 0.6 } }, { 4.0, 4.0, QQRLocalShape{} },
+         { 30.0, 30.0, QQRLocalShape{} } })
+  {
+    const QQRSpline curve = QQRSpline::approximate(points, t, false, alpha, beta, local);
+    // (3.6) with the control points P_{-1} = P_0, P_0..P_N, P_{N+1} = P_N.
+    const std::vector<double> h = Intervals(u);
+    QQRLocalParameters parameters = cubicLocalParameters(h);
+    for (int i = 0; i < static_cast<int>(h.size()); ++i)
+    {
+      parameters.X[i] = std::isnan(local.X) ? parameters.X[i] : local.X;
+      parameters.Y[i] = std::isnan(local.Y) ? parameters.Y[i] : local.Y;
+      parameters.Z[i] = std::isnan(local.Z) ? parameters.Z[i] : local.Z;
+    }
+    const QQRBSplineBasis basis(u, alpha, beta, parameters);
+    double largest = 0.0, fromCubic = 0.0;
+    for (int k = 0; k < spans; ++k)
+    {
+      for (int s = 0; s <= 8; ++s)
+      {
+        const double x = t[k] + s / 8.0 * (t[k + 1] - t[k]);
+        const Derivatives q = curve.evaluateOnSpan(k, x, 3);
+        Derivatives b, cubic;
+        b.fill(Vec3::Zero());
+        cubic.fill(Vec3::Zero());
+        for (int j = k - 1; j <= k + 2; ++j) // paper B_j, stored at j + 1
+        {
+          const Vec3& p = points[std::clamp(j, 0, spans)];
+          const Jet value = basis.value(j + 1, x, 3, k + 3);
+          for (int m = 0; m <= 3; ++m)
+          {
+            b[m] += value[m] * p;
+            cubic[m] += coxDeBoor(u, j + 1, 3, m, k + 3, x) * p;
+          }
+        }
+        for (int m = 0; m <= 3; ++m)
+        {
+          const double scale = std::pow(t[k + 1] - t[k], -m);
+          largest = std::max(largest, (q[m] - b[m]).norm() / (scale + b[m].norm()));
+          fromCubic = std::max(fromCubic, (q[m] - cubic[m]).norm() / scale);
+        }
+      }
+    }
+    std::printf("alpha %g, beta %g: Bezier form minus sum B_j P_j %.1e; minus the cubic B-spline curve %.1e\n",
+      alpha, beta, largest, fromCubic);
+    EXPECT_LT(largest, 1e-12);
+    if (alpha == 4.0 && beta == 4.0 && std::isnan(local.X))
+    {
+      EXPECT_LT(fromCubic, 1e-12);
+    }
+    else
+    {
+      EXPECT_GT(fromCubic, 1e-3);
+    }
+  }
+}
+
+TEST(QQRSpline, LocalInterpolationPassesThroughTheDataWithTangent320AndCurvature321)
+{
+  std::mt19937 random(55);
+  std::uniform_real_distribution<double> exponent(3.2, 60.0);
+  for (const bool closed : { false, true })
+  {
+    for (const double fixedZ : { std::numeric_limits<double>::quiet_NaN(), 0.3 })
+    {
+      const std::vector<Vec3> points = RandomPoints(11, random);
+      const int n = static_cast<int>(points.size());
+      const int spans = closed ? n : n - 1;
+      const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+      std::vector<double> kappa(n);
+      for (double& k : kappa)
+      {
+        k = exponent(random);
+      }
+      kappa[2] = 4.0;
+      const QQRSpline curve = QQRSpline::interpolate(points, t, closed, kappa, QQRLocalShape{ NAN, NAN, fixedZ });
+      auto dh = [&](int j) {
+        j = closed ? (j % spans + spans) % spans : j;
+        return t[j + 1] - t[j];
+      };
+      auto zAt = [&](int j) { // the paper's z with H(j) = dh_{j-2}
+        return std::isnan(fixedZ)
+          ? (2 * dh(j - 2) + dh(j - 1)) / (2 * (dh(j - 2) + dh(j - 1) + dh(j)))
+          : fixedZ;
+      };
+      double position = 0.0, tangent = 0.0, second = 0.0, thirdJump = 0.0;
+      double c2 = 0.0;
+      for (int k = 0; k < spans; ++k)
+      {
+        const Derivatives right = curve.evaluateOnSpan(k, t[k], 3);
+        position = std::max(position, (right[0] - points[k]).norm());
+        // (3.20), (3.21) at u_i, i = k + 2: h_{i-1} = dh_{k-1}, h_i = dh_k,
+        // z_{i-2}, z_{i-1}; P_{i-3}, P_{i-2}, P_{i-1} = D_{k-1}, D_k, D_{k+1}.
+        const bool interior = closed || (k >= 2 && k + 2 <= spans);
+        if (interior)
+        {
+          const Vec3& before = points[(k - 1 + n) % n];
+          const Vec3& after = points[(k + 1) % n];
+          const double a = kappa[k], h0 = dh(k - 1), h1 = dh(k);
+          const double z0 = zAt(k), z1 = zAt(k + 1);
+          const Vec3 backward = (points[k] - before) / h0, forward = (after - points[k]) / h1;
+          const Vec3 expectedTangent = a / (2 * (h0 + h1)) * (h1 * (1 - z0) * backward + h0 * z1 * forward);
+          const Vec3 expectedSecond = (a * a - a) / (h0 + h1) * (z1 * forward - (1 - z0) * backward);
+          tangent = std::max(tangent, (right[1] - expectedTangent).norm() / expectedTangent.norm());
+          second = std::max(second, (right[2] - expectedSecond).norm() / expectedSecond.norm());
+        }
+        if (k > 0 || closed)
+        {
+          const int previous = (k - 1 + spans) % spans;
+          const Derivatives left = curve.evaluateOnSpan(previous, t[previous + 1], 3);
+          for (int m = 0; m <= 2; ++m)
+          {
+            c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(right[m].norm(), 1e-300));
+          }
+          thirdJump = std::max(thirdJump, (left[3] - right[3]).norm() / right[3].norm());
+        }
+      }
+      if (!closed)
+      {
+        position = std::max(position, (curve.evaluate(t.back(), 0)[0] - points.back()).norm());
+      }
+      std::printf("%s, z %s: data %.1e, tangent (3.20) %.1e, second derivative (3.21) %.1e, "
+                  "C2 jumps %.1e, third-derivative jump %.2f\n",
+        closed ? "closed" : "open", std::isnan(fixedZ) ? "paper's" : "0.3", position, tangent, second, c2,
+        thirdJump);
+      EXPECT_LT(position, 1e-12);
+      EXPECT_LT(tangent, 1e-12);
+      EXPECT_LT(second, 1e-11);
+      EXPECT_LT(c2, 1e-9);
+      EXPECT_GT(thirdJump, 1e-3);
+    }
+  }
+}
+
+TEST(QQRSpline, PerKnotExponentsKeepC2ForTheControlPolygonCurveOpenAndClosed)
+{
+  std::mt19937 random(89);
+  std::uniform_real_distribution<double> exponent(3.2, 150.0);
+  for (const bool closed : { false, true })
+  {
+    const std::vector<Vec3> points = RandomPoints(10, random);
+    const int n = static_cast<int>(points.size());
+    const int spans = closed ? n : n - 1;
+    const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+    std::vector<double> kappa(n);
+    for (double& k : kappa)
+    {
+      k = exponent(random);
+    }
+    const QQRSpline curve = QQRSpline::approximate(points, t, closed, kappa);
+    double c2 = 0.0, thirdJump = 0.0;
+    for (int k = closed ? 0 : 1; k < spans; ++k)
+    {
+      const int previous = (k - 1 + spans) % spans;
+      const Derivatives left = curve.evaluateOnSpan(previous, t[previous + 1], 3);
+      const Derivatives right = curve.evaluateOnSpan(k, t[k], 3);
+      for (int m = 0; m <= 2; ++m)
+      {
+        c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(right[m].norm(), 1e-300));
+      }
+      thirdJump = std::max(thirdJump, (left[3] - right[3]).norm() / right[3].norm());
+      EXPECT_EQ(curve.exponents(k)[0], kappa[k]);
+      EXPECT_EQ(curve.exponents(previous)[1], kappa[k]);
+    }
+    std::printf("control polygon, %s, an exponent per knot in [3.2, 150]: C2 jumps %.1e, third %.2f\n",
+      closed ? "closed" : "open", c2, thirdJump);
+    EXPECT_LT(c2, 1e-9);
+    EXPECT_GT(thirdJump, 1e-3);
+  }
+  // Through fitPolyline, a closed line: the curve closes C2 at its seam and interpolates.
+  std::vector<Vec3> ring;
+  for (int i = 0; i < 12; ++i)
+  {
+    ring.emplace_back(std::cos(0.5 * i) * (1 + 0.3 * std::sin(1.5 * i)), std::sin(0.5 * i), 0.2 * std::cos(i));
+  }
+  FitOptions options;
+  options.Closed = true;
+  const FittedPolyline fit = fitPolyline(ring, options, qqrBuilder(QQROptions{}));
+  const Curve& spline = *fit.Spline;
+  const Derivatives seamLeft = spline.evaluateOnSpan(spline.numberOfSpans() - 1, spline.lastParameter(), 2);
+  const Derivatives seamRight = spline.evaluateOnSpan(0, spline.firstParameter(), 2);
+  for (int m = 0; m <= 2; ++m)
+  {
+    EXPECT_LT((seamLeft[m] - seamRight[m]).norm(), 1e-12 * std::max(1.0, seamRight[m].norm())) << m;
+  }
+  for (int k = 0; k < spline.numberOfSpans(); ++k)
+  {
+    EXPECT_LT((spline.evaluateOnSpan(k, spline.knots()[k], 0)[0] - fit.Data.Points[k]).norm(), 1e-14);
+  }
+}
+
+TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
+{
+  // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)
+  // with its backward difference gone.
+  std::mt19937 random(3);
+  const std::vector<Vec3> points = RandomPoints(6, random);
+  const std::vector<double> t = RandomKnots(6, random, 1.0);
+  const QQRSpline curve = QQRSpline::interpolate(points, t, false, 4.0, 4.0);
+  const Vec3 start = curve.evaluate(t.front(), 1)[1];
+  const Vec3 end = curve.evaluate(t.back(), 1)[1];
+  EXPECT_LT(start.normalized().cross((points[1] - points[0]).normalized()).norm(), 1e-14);
+  EXPECT_LT(end.normalized().cross((points[5] - points[4]).normalized()).norm(), 1e-14);
+  EXPECT_GT(start.dot(points[1] - points[0]), 0.0);
+}
+
+namespace
+{
+FittedPolyline Fit(const std::vector<Vec3>& points, bool interpolate, bool automatic, double alpha = 4.0)
+{
+  QQROptions options;
+  options.Interpolate = interpolate;
+  options.Automatic = automatic;
+  options.Alpha = options.Beta = alpha;
+  return fitPolyline(points, FitOptions{}, qqrBuilder(options));
+}
+
+double LargestAlpha(const FittedPolyline& fit)
+{
+  const auto values = fit.Spline->spanParameters().at(0).Values;
+  return *std::max_element(values.begin(), values.end());
+}
+
+double LargestCurvature(const FittedPolyline& fit)
+{
+  double largest = 0.0;
+  for (const FrenetFrame& frame : sampleFit(fit).Frames)
+  {
+    largest = std::max(largest, frame.Curvature);
+  }
+  return largest;
+}
+} // namespace
+
+TEST(QQRSpline, RaisingAlphaBendsConvexDataTheWrongWayInTheMiddleOfEachSpan)
+{
+  // Why the automatic mode cannot tighten the local interpolation: on a convex
+  // arc, alpha = 4 touches zero curvature mid-span, alpha > 4 reverses it,
+  // alpha < 4 keeps it positive. Chord-length knots on a circle arc.
+  std::vector<Vec3> points;
+  std::vector<double> knots;
+  for (int i = 0; i < 9; ++i)
+  {
+    points.emplace_back(std::cos(0.3 * i), std::sin(0.3 * i), 0.0);
+    knots.push_back(2 * std::sin(0.15) * i);
+  }
+  for (const double alpha : { 3.5, 4.0, 6.0, 20.0 })
+  {
+    const QQRSpline curve = QQRSpline::interpolate(points, knots, false, alpha, alpha);
+    double lowest = 1e300;
+    for (int s = 0; s <= 64; ++s)
+    {
+      const Derivatives d = curve.evaluateOnSpan(4, knots[4] + s / 64.0 * (knots[5] - knots[4]), 2);
+      lowest = std::min(lowest, d[1].cross(d[2]).z() / std::pow(d[1].norm(), 3));
+    }
+    const Derivatives atKnot = curve.evaluateOnSpan(4, knots[4], 2);
+    const double knotCurvature = atKnot[1].cross(atKnot[2]).norm() / std::pow(atKnot[1].norm(), 3);
+    std::printf("circle arc, alpha %g: curvature at the knot %.3f (true 1), lowest on the span %.3g, "
+                "speed ratio %.1e\n",
+      alpha, knotCurvature, lowest, curve.speedRatio(4));
+    if (alpha < 4.0)
+    {
+      EXPECT_GT(lowest, 0.1);
+    }
+    else if (alpha == 4.0)
+    {
+      EXPECT_NEAR(lowest, 0.0, 1e-2);
+    }
+    else
+    {
+      EXPECT_LT(lowest, -1.0);
+    }
+  }
+}
+
+TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
+{
+  const std::vector<std::pair<const char*, std::vector<Vec3>>> sets = { { "Akima", akima() },
+    { "RPN 15A", rpn15a() }, { "titanium", titanium() } };
+  for (const auto& [name, points] : sets)
+  {
+    for (const bool interpolate : { true, false })
+    {
+      const FittedPolyline fixed = Fit(points, interpolate, false);
+      const FittedPolyline automatic = Fit(points, interpolate, true);
+      const auto alphas = automatic.Spline->spanParameters().at(0).Values;
+      std::printf("%s, %s: alpha = beta = 4 fixed %d violations, automatic %d (largest alpha %g, "
+                  "%ld of %zu spans raised; largest curvature %.3g, fixed %.3g)\n",
+        name, interpolate ? "interpolation" : "control polygon", fixed.Audit.violations(),
+        automatic.Audit.violations(), LargestAlpha(automatic),
+        std::count_if(alphas.begin(), alphas.end(), [](double a) { return a > 4.0; }), alphas.size(),
+        LargestCurvature(automatic), LargestCurvature(fixed));
+      EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << name;
+      if (interpolate)
+      {
+        EXPECT_GT(fixed.Audit.violations(), 0) << name;
+      }
+      // The automatic curve stays regular: no span slower than 1e-3 of its Bezier polygon.
+      const auto& spline = dynamic_cast<const QQRSpline&>(*automatic.Spline);
+      for (int k = 0; k < spline.numberOfSpans(); ++k)
+      {
+        EXPECT_GE(spline.speedRatio(k), 1e-3) << name << " span " << k;
+      }
+    }
+  }
+  // No exponent fixes Akima's straight run: the span leaving it has a Bezier
+  // point off the line (x_i P_i in S_{i-1}), whatever alpha (criterion (i)).
+  for (const bool interpolate : { true, false })
+  {
+    for (const double alpha : { 3.2, 4.0, 8.0, 13.5, 50.0, 200.0 })
+    {
+      const FittedPolyline fit = Fit(akima(), interpolate, false, alpha);
+      EXPECT_GE(fit.Audit.Failures[int(ShapeCriterion::Collinearity)], 1) << alpha;
+    }
+  }
+  // What the guard prevents: raised far enough, RPN 15A "passes" the audit only
+  // because the curve has almost stopped mid-span (speed 1e-17 of the chord's)
+  // and the audit counts any curvature there as rounding.
+  const FittedPolyline stalled = Fit(rpn15a(), true, false, 68.0);
+  const auto& spline = dynamic_cast<const QQRSpline&>(*stalled.Spline);
+  double slowest = 1.0;
+  for (int k = 0; k < spline.numberOfSpans(); ++k)
+  {
+    slowest = std::min(slowest, spline.speedRatio(k));
+  }
+  std::printf("RPN 15A, alpha = 68 fixed: %d violations, slowest span speed ratio %.1e, largest "
+              "curvature %.2g\n",
+    stalled.Audit.violations(), slowest, LargestCurvature(stalled));
+  EXPECT_LT(slowest, 1e-12);
+}
+
+TEST(QQRSpline, HelixCurvatureAndTorsion)
+{
+  // Control polygon (alpha = beta = 4: the cubic B-spline of the data): second
+  // order. Local interpolation: (3.20) is consistent only for alpha = 4 and
+  // (3.21) then gives 3x the curvature at the knots (4 (alpha - 1) / alpha on
+  // uniform knots): the error tends to 2, it does not converge.
+  for (const bool interpolate : { false, true })
+  {
+    double previousCurvature = 1.0, previousTorsion = 1.0;
+    for (const int perTurn : { 8, 16, 32 })
+    {
+      const FittedPolyline fit = Fit(helix(perTurn, 6), interpolate, false);
+      const RelativeErrors errors = interiorErrors(fit, 0.4, 0.2, perTurn);
+      const double curvatureOrder = std::log2(previousCurvature / errors.Curvature);
+      const double torsionOrder = std::log2(previousTorsion / errors.Torsion);
+      std::printf("helix, %s, %d points per turn: curvature %.3g%%, torsion %.3g%% (orders %.2f, %.2f)\n",
+        interpolate ? "interpolation" : "control polygon", perTurn, 100 * errors.Curvature,
+        100 * errors.Torsion, curvatureOrder, torsionOrder);
+      if (!interpolate)
+      {
+        if (perTurn == 32)
+        {
+          EXPECT_LT(errors.Curvature, 1e-2);
+          EXPECT_LT(errors.Torsion, 2e-2);
+        }
+        if (perTurn > 8)
+        {
+          EXPECT_GT(curvatureOrder, 1.8);
+          EXPECT_GT(torsionOrder, 1.8);
+        }
+      }
+      else if (perTurn == 32)
+      {
+        EXPECT_NEAR(errors.Curvature, 2.0, 0.05);
+      }
+      previousCurvature = errors.Curvature;
+      previousTorsion = errors.Torsion;
+    }
+  }
+  // The default builder (automatic interpolation) on the helix.
+  for (const int perTurn : { 8, 16, 32 })
+  {
+    const FittedPolyline fit = fitPolyline(helix(perTurn, 6), FitOptions{}, qqrBuilder(QQROptions{}));
+    const RelativeErrors errors = interiorErrors(fit, 0.4, 0.2, perTurn);
+    std::printf("helix, default builder, %d points per turn: curvature %.3g%%, torsion %.3g%%, "
+                "%d violations, largest alpha %g\n",
+      perTurn, 100 * errors.Curvature, 100 * errors.Torsion, fit.Audit.violations(), LargestAlpha(fit));
+  }
+}
+
+TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
+{
+  EXPECT_THROW(qqrBasis(0.5, 1.9, 4.0), std::invalid_argument);
+  EXPECT_THROW(qqrBasis(0.5, 4.0, 1.0), std::invalid_argument);
+  EXPECT_THROW(qqrBasis(0.5, NAN, 4.0), std::invalid_argument);
+  const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 1 } };
+  const std::vector<double> knots = { 0, 1, 2, 3 };
+  EXPECT_NO_THROW(QQRSpline::interpolate(points, knots, false, 2.0, 2.0));
+  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, 4.0, 1.5), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::approximate(points, knots, false, 1.5, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::interpolate(points, { 0, 1, 2 }, false, 4.0, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::interpolate(points, knots, true, 4.0, 4.0), std::invalid_argument); // closed: 5 knots
+  EXPECT_THROW(QQRSpline::interpolate(points, { 0, 1, 1, 3 }, false, 4.0, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, std::vector<double>{ 4, 4, 4 }), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, std::vector<double>{ 4, 4, 1, 4 }), std::invalid_argument);
+  EXPECT_THROW(QQRBSplineBasis({ 0, 1, 2, 3 }, 4, 4, {}), std::invalid_argument);
+  EXPECT_THROW(QQRBSplineBasis({ 0, 1, 2, 3, 4 }, 4, 4, QQRLocalParameters{}), std::invalid_argument);
+  QQROptions options;
+  options.Alpha = 1.5;
+  EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
+  options.Alpha = 4.0;
+  options.Beta = -1.0;
+  EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
+}
