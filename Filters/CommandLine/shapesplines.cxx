@@ -4,6 +4,7 @@
 // Reads .vtp, legacy .vtk and .csv; writes .vtp or .csv. Run with --help.
 #include "vtkCubicSplineFilter.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
+#include "vtkQQRSplineFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
 #include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
@@ -74,6 +75,8 @@ Options of fit:
                            gencubic  C2 generalized cubic, automatic tension
                            quintic   C3/C4 tensioned quintic, automatic tension
                            vdps      C3 variable degree spline, automatic degrees
+                           qqr       C2 qqr B-spline-like curve, local interpolation
+                                     (or --mode approximate: points = control polygon)
   --end-condition NAME   cubic: not-a-knot (default), natural or clamped;
                          vdps: natural (default) or clamped
   --kind NAME            gencubic: exponential (default), trigonometric,
@@ -81,9 +84,10 @@ Options of fit:
   --tension T            gencubic: starting tension (fixed with --fixed);
                          the degree for variable-degree (default 0)
   --max-tension T        gencubic: cap of the automatic tension (default 1000)
-  --fixed                gencubic, quintic, vdps: no automatic tension/degrees
+  --fixed                gencubic, quintic, vdps, qqr: no automatic tension,
+                         degrees or exponents
   --continuity C         quintic: c4 (default) or c3
-  --mode M               quintic: interpolate (default) or approximate;
+  --mode M               quintic, qqr: interpolate (default) or approximate;
                          vdps: interpolate (default), approximate (the local
                          scheme), approximate-global or approximate-local
   --knots N              approximate: number of knots (default 10)
@@ -91,6 +95,9 @@ Options of fit:
                          vdps: --lambda is the corner cutting tension (1)
   --degree K             vdps: starting (fixed with --fixed) degree (default 5)
   --max-degree K         vdps: cap of the automatic degrees (default 200)
+  --alpha A, --beta B    qqr: exponents (default 4, 4; automatic starts there)
+  --max-alpha A          qqr: cap of the automatic exponents (default 200)
+  --z Z                  qqr: local bias z at every knot instead of the paper's
   --parameterization P   chord (default), centripetal or uniform knots
   --closed               close every line of 3 or more distinct points
   --samples N            N samples per span between data points (default 10)
@@ -184,7 +191,7 @@ struct Arguments
 
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
-  "max-degree", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
+  "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
 const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "quiet", "help" };
 
 Arguments Parse(int argc, char* argv[])
@@ -700,6 +707,26 @@ std::map<std::string, FamilyFactory> Families()
        filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
        filter->SetMaxDegree(args.Number("max-degree", 200.0, 5.0, 1000.0));
        filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } },
+    { "qqr", [](Arguments& args) {
+       auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+       const std::string mode = args.Value("mode", "interpolate");
+       if (mode != "interpolate" && mode != "approximate")
+       {
+         throw UsageError("--mode must be interpolate or approximate for qqr");
+       }
+       filter->SetMode(mode == "approximate" ? vtkQQRSplineFilter::APPROXIMATE
+                                             : vtkQQRSplineFilter::INTERPOLATE);
+       filter->SetAutomatic(!args.Flag("fixed"));
+       filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
+       filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
+       filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
+       if (args.Flag("z"))
+       {
+         filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
+         filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
+       }
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } } };
 }

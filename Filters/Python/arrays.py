@@ -25,7 +25,8 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 import shapesplines
 
 FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter",
-            "quintic": "vtkTensionQuinticSplineFilter", "vdps": "vtkVariableDegreeSplineFilter"}
+            "quintic": "vtkTensionQuinticSplineFilter", "vdps": "vtkVariableDegreeSplineFilter",
+            "qqr": "vtkQQRSplineFilter"}
 
 _POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
                  "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",

@@ -9,6 +9,7 @@
 #include "vtkCubicSplineFilter.h"
 #include "vtkFloatArray.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
+#include "vtkQQRSplineFilter.h"
 #include "vtkShapeSplineFilter.h"
 #include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
@@ -52,6 +53,17 @@ std::vector<SplineFilter> Filters()
        filter->SetEndCondition(vtkVariableDegreeSplineFilter::CLAMPED);
        filter->AutomaticDegreesOff();
        filter->SetDegree(12.0);
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     } },
+    { "QQR", [] { return vtkSmartPointer<vtkShapeSplineFilter>(
+                   vtkSmartPointer<vtkQQRSplineFilter>::New()); } },
+    { "QQRFixedCustom", [] {
+       auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+       filter->AutomaticOff();
+       filter->SetAlpha(7.0);
+       filter->SetBeta(7.0);
+       filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
+       filter->SetZ(0.3);
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } } };
 }

@@ -3,6 +3,7 @@
 // spline family joins by adding its builder to Families below.
 #include "GeneralizedCubicSpline.h"
 #include "MathTestUtilities.h"
+#include "QQRSpline.h"
 #include "TensionQuinticFit.h"
 #include "VariableDegreeSpline.h"
 
@@ -54,6 +55,16 @@ CurveBuilder variableDegree(VariableDegreeEnds ends, double degree)
   return variableDegreeBuilder(options);
 }
 
+CurveBuilder qqr(bool interpolate, double alpha)
+{
+  QQROptions options;
+  options.Interpolate = interpolate;
+  options.Automatic = false;
+  options.Alpha = alpha;
+  options.Beta = alpha;
+  return qqrBuilder(options);
+}
+
 std::vector<Family> Families()
 {
   return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
@@ -70,7 +81,10 @@ std::vector<Family> Families()
     { "TensionQuinticC3Closed", quinticBuilder(QuinticContinuity::C3, 0.5, 0.5), true },
     { "VariableDegreeAutomatic", variableDegreeBuilder({}), false },
     { "VariableDegreeClosed", variableDegreeBuilder({}), true },
-    { "VariableDegreeClampedFixed", variableDegree(VariableDegreeEnds::Clamped, 9.0), false } };
+    { "VariableDegreeClampedFixed", variableDegree(VariableDegreeEnds::Clamped, 9.0), false },
+    { "QQRInterpolationAutomatic", qqrBuilder({}), false },
+    { "QQRInterpolationClosed", qqrBuilder({}), true },
+    { "QQRControlPolygonFixed", qqr(false, 6.0), false } };
 }
 
 /// Uneven, non-planar data: a conical helix with a kink.

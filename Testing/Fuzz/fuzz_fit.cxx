@@ -28,6 +28,7 @@
 #include "CubicSpline.h"
 #include "FitPolyline.h"
 #include "GeneralizedCubicSpline.h"
+#include "QQRSpline.h"
 #include "TensionQuinticFit.h"
 #include "VariableDegreeSpline.h"
 #include "Parameterization.h"
@@ -136,7 +137,8 @@ struct Input
 {
   ss::FitOptions Options;
   ss::CubicEndCondition Ends = ss::CubicEndCondition::NotAKnot;
-  /// 0-1: the cubic; 2: the variable degree spline (by the end byte:
+  /// 0: the cubic; 1: the qqr local interpolation, automatic; 2: the
+  /// variable degree spline (by the end byte:
   /// automatic natural, automatic clamped, fixed degree 40); 3: the C4
   /// tensioned quintic, automatic; 4-7: the
   /// generalized cubic, automatic exponential, trigonometric and variable
@@ -382,6 +384,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
       context.Data.Points, context.Knots, context.Data.Closed, ends));
     return built;
   };
+  if (input.Family == 1)
+  {
+    build = ss::qqrBuilder(ss::QQROptions{});
+  }
   if (input.Family == 2)
   {
     ss::VariableDegreeOptions variable;

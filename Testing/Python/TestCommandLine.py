@@ -163,6 +163,12 @@ code, out, err = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("he
 check(code == 0 and "shape violations 0" in out, "--family vdps --mode approximate-global",
       out.strip().splitlines()[0] if out.strip() else err)
 
+code, out, err = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-qqr.csv"),
+                     "--family", "qqr", "--fixed", "--z", "0.4")
+qqr = read_csv(temp("akima-qqr.csv"))
+check(code == 0 and "shape violations" in out and qqr["Alpha"].max() == 4,
+      "--family qqr: local interpolation, Alpha written", out.strip().splitlines()[0] if out.strip() else err)
+
 # ---------------------------------------------------------------------------- audit
 code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
 rows = [l for l in out.splitlines() if l.startswith("line ")]
@@ -193,6 +199,8 @@ cases = [
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--degree", "4"), 1, "--degree must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--end-condition", "not-a-knot"), 1,
      "--end-condition must be natural or clamped"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "qqr", "--alpha", "1"), 1, "--alpha must be"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "qqr", "--z", "2"), 1, "--z must be"),
     (("fit", temp("two.csv")), 1, "needs -o"),
     (("fit", temp("two.csv"), "-o"), 1, "needs a value"),
     (("audit",), 1, "audit takes INPUT"),

@@ -42,7 +42,7 @@ if not os.path.isfile(args.plugin):
     raise SystemExit("plugin not found: %s" % args.plugin)
 LoadPlugin(args.plugin, remote=False, ns=globals())
 for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "GeneralizedCubicSpline",
-                   "TensionQuinticSpline", "VariableDegreeSpline"):
+                   "TensionQuinticSpline", "VariableDegreeSpline", "QQRSpline"):
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
@@ -295,7 +295,7 @@ print("== documentation of every property")
 helix = reader("helix.vtp")
 for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
               CurvatureComb(Input=CubicSpline(Input=helix)), GeneralizedCubicSpline(Input=helix),
-              TensionQuinticSpline(Input=helix), VariableDegreeSpline(Input=helix)):
+              TensionQuinticSpline(Input=helix), VariableDegreeSpline(Input=helix), QQRSpline(Input=helix)):
     name = proxy.GetXMLName()
     doc = proxy.SMProxy.GetDocumentation()
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
@@ -329,7 +329,11 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                          "CurveShapeTolerance", "VMTKArrayNames", "Mode", "NumberOfKnots",
                                          "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
-                                         "ScaleLambdaWithDegree", "EndCondition", "DegreeArray"]}[name]
+                                         "ScaleLambdaWithDegree", "EndCondition", "DegreeArray"],
+                "QQRSpline": ["Input", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
+                              "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames",
+                              "Mode", "Automatic", "Alpha", "Beta", "MaxAlpha", "LocalParameters", "X", "Y",
+                              "Z", "Continuity", "FrenetOrder"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
@@ -811,6 +815,25 @@ for mode in ("Approximate Global", "Approximate Local"):
     check(cell_array(out, "ShapeViolations")[0] == 0 and point_array(out, "Degree").min() >= 5,
           "VariableDegreeSpline %s: keeps the shape of psi" % mode,
           "violations %d" % cell_array(out, "ShapeViolations")[0])
+
+# =========================================================================== QQRSpline
+print("== QQRSpline on Akima's data and the helix")
+out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"))), "QQRSpline(akima, local interpolation)")
+automatic = cell_array(out, "ShapeViolations")[0]
+fixed_out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"), Automatic=0)), "QQRSpline(akima, alpha 4)")
+check(automatic <= cell_array(fixed_out, "ShapeViolations")[0] and point_array(fixed_out, "Alpha").max() == 4,
+      "QQRSpline: automatic never worse than alpha = beta = 4; Alpha written",
+      "%d (automatic) vs %d violations" % (automatic, cell_array(fixed_out, "ShapeViolations")[0]))
+polygon = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0)),
+              "QQRSpline(helix, control polygon)")
+cubic_bspline = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0,
+                                        Continuity="C2 and FC(2l+3)", FrenetOrder=3)),
+                    "QQRSpline(helix, control polygon, FC9)")
+check(point_array(cubic_bspline, "Alpha").min() == 6 and point_array(polygon, "Alpha").max() == 4,
+      "QQRSpline: C2 and FC(2l+3) with l = 3 raises alpha = beta to l + 3 = 6",
+      "Alpha %s" % fmt(point_array(cubic_bspline, "Alpha").min()))
+run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Continuity="C2 and FC(2l+3)")),
+    "QQRSpline(helix, interpolation, FC asked)", ("using C2",))
 
 # =========================================================================== summary
 elapsed = time.time() - START

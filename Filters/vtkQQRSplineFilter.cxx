@@ -1,0 +1,83 @@
+#include "vtkQQRSplineFilter.h"
+
+#include "QQRSpline.h"
+
+#include "vtkObjectFactory.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkQQRSplineFilter);
+
+vtkQQRSplineFilter::vtkQQRSplineFilter() = default;
+vtkQQRSplineFilter::~vtkQQRSplineFilter() = default;
+
+const char* vtkQQRSplineFilter::GetModeAsString()
+{
+  return this->Mode == APPROXIMATE ? "Approximate" : "Interpolate";
+}
+
+int vtkQQRSplineFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* output)
+{
+  if (this->Continuity == C2_FC && this->Mode == INTERPOLATE)
+  {
+    vtkWarningMacro("Continuity C2_FC needs x = y = 0, which the local interpolation cannot "
+                    "take (it sets x and y from (3.18)): using C2.");
+  }
+  if (std::min(this->Alpha, this->Beta) <= 3.0)
+  {
+    vtkWarningMacro("Alpha and Beta at or below 3: the qqr basis is not positive there and the "
+                    "joins are not C2 (the paper's Theorems 1 and 8 need more than 3).");
+  }
+  if (this->Automatic && this->MaxAlpha < std::max(this->Alpha, this->Beta))
+  {
+    vtkWarningMacro("MaxAlpha " << this->MaxAlpha << " is below Alpha/Beta: the automatic mode "
+                                << "cannot raise the exponents.");
+  }
+  return this->Superclass::RequestData(request, inputs, output);
+}
+
+shapesplines::BuiltCurve vtkQQRSplineFilter::BuildCurve(
+  const shapesplines::FitContext& context) const
+{
+  shapesplines::QQROptions options;
+  options.Interpolate = this->Mode == INTERPOLATE;
+  options.Automatic = this->Automatic;
+  options.Alpha = this->Alpha;
+  options.Beta = this->Beta;
+  options.MaxAlpha = std::max({ this->MaxAlpha, this->Alpha, this->Beta });
+  if (this->LocalParameters == CUSTOM)
+  {
+    options.X = this->X;
+    options.Y = this->Y;
+    options.Z = this->Z;
+  }
+  if (this->Continuity == C2_FC && this->Mode == APPROXIMATE)
+  {
+    // Theorem 13: x = y = 0 and alpha = beta >= l + 3.
+    options.X = 0.0;
+    options.Y = 0.0;
+    const double exponent = std::max({ this->Alpha, this->Beta, this->FrenetOrder + 3.0 });
+    options.Alpha = exponent;
+    options.Beta = exponent;
+    options.MaxAlpha = std::max(options.MaxAlpha, exponent);
+  }
+  return shapesplines::qqrBuilder(options)(context);
+}
+
+void vtkQQRSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Mode: " << this->GetModeAsString() << "\n";
+  os << indent << "Automatic: " << (this->Automatic ? "On" : "Off") << "\n";
+  os << indent << "Alpha: " << this->Alpha << "\n";
+  os << indent << "Beta: " << this->Beta << "\n";
+  os << indent << "MaxAlpha: " << this->MaxAlpha << "\n";
+  os << indent << "LocalParameters: " << (this->LocalParameters == CUSTOM ? "Custom" : "Paper")
+     << "\n";
+  os << indent << "X: " << this->X << "\n";
+  os << indent << "Y: " << this->Y << "\n";
+  os << indent << "Z: " << this->Z << "\n";
+  os << indent << "Continuity: " << (this->Continuity == C2_FC ? "C2_FC" : "C2") << "\n";
+  os << indent << "FrenetOrder: " << this->FrenetOrder << "\n";
+}

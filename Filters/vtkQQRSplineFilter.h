@@ -1,0 +1,162 @@
+/**
+ * @class   vtkQQRSplineFilter
+ * @brief   C2 cubic B-spline-like curves on the quartic qqr basis (two
+ *          exponential shape parameters, three local ones) through or near
+ *          each polyline, built locally without a global solve
+ *
+ * Wang and Zhang's qqr curves (paper 003): every span is a quartic
+ * Bernstein-like curve with exponents alpha, beta; joined, they form cubic
+ * B-spline-like curves with local shape parameters x, y, z. With
+ * alpha = beta = 4 and the paper's local parameters they are the classical
+ * cubic B-splines.
+ *
+ * Mode INTERPOLATE (default) is the local interpolation of section 3.6:
+ * every point is passed through, with tangents and second derivatives from
+ * its two neighbours only, so editing a point changes four spans at most.
+ * It is a shape design tool rather than an accurate one: its second
+ * derivative at a point is 4 (alpha - 1) / alpha times the second difference
+ * (3 times at alpha = 4), so curvature at the points is about three times
+ * too large and does not converge as points are added. Mode APPROXIMATE
+ * takes the points as the control polygon (the classical cubic B-spline
+ * curve at the defaults; shape violations are counted against the polygon).
+ *
+ * With Automatic on (default) the shape parameters are raised only at the
+ * knots of spans where the shape audit (paper 001, Definition 1) fails;
+ * raising alpha alone cannot straighten every run (see the README), so some
+ * lines keep violations. Continuity C2_FC (approximation) sets x = y = 0 and
+ * alpha = beta >= FrenetOrder + 3: C2 and Frenet frame continuous to order
+ * 2 FrenetOrder + 3 (Theorem 13).
+ *
+ * Output: the contract of vtkShapeSplineFilter, plus the point array Alpha
+ * (the larger exponent of each sample's span) and the cell array MaxAlpha.
+ *
+ * @sa vtkShapeSplineFilter vtkCubicSplineFilter
+ */
+#ifndef vtkQQRSplineFilter_h
+#define vtkQQRSplineFilter_h
+
+#include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkShapeSplineFilter.h"
+
+class SHAPESPLINESFILTERS_EXPORT vtkQQRSplineFilter : public vtkShapeSplineFilter
+{
+public:
+  static vtkQQRSplineFilter* New();
+  vtkTypeMacro(vtkQQRSplineFilter, vtkShapeSplineFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ModeType
+  {
+    INTERPOLATE = 0,
+    APPROXIMATE = 1
+  };
+
+  enum LocalParametersType
+  {
+    PAPER = 0,
+    CUSTOM = 1
+  };
+
+  enum ContinuityType
+  {
+    C2 = 0,
+    C2_FC = 1
+  };
+
+  ///@{
+  /**
+   * INTERPOLATE (default; local interpolation, section 3.6) or APPROXIMATE
+   * (the points are the control polygon).
+   */
+  vtkSetClampMacro(Mode, int, INTERPOLATE, APPROXIMATE);
+  vtkGetMacro(Mode, int);
+  void SetModeToInterpolate() { this->SetMode(INTERPOLATE); }
+  void SetModeToApproximate() { this->SetMode(APPROXIMATE); }
+  const char* GetModeAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Raise the shape parameters only at the knots of spans where the shape
+   * audit fails (default on); off, Alpha and Beta everywhere.
+   */
+  vtkSetMacro(Automatic, bool);
+  vtkGetMacro(Automatic, bool);
+  vtkBooleanMacro(Automatic, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The exponents of the qqr basis (default 4 and 4, at least 2; above 3 for
+   * a positive basis and C2 joins). Automatic mode starts from the larger.
+   */
+  vtkSetClampMacro(Alpha, double, 2.0, 200.0);
+  vtkGetMacro(Alpha, double);
+  vtkSetClampMacro(Beta, double, 2.0, 200.0);
+  vtkGetMacro(Beta, double);
+  ///@}
+
+  ///@{
+  /**
+   * The largest exponent the automatic mode may reach (default 200).
+   */
+  vtkSetClampMacro(MaxAlpha, double, 2.0, 200.0);
+  vtkGetMacro(MaxAlpha, double);
+  ///@}
+
+  ///@{
+  /**
+   * PAPER (default): the local parameters given before the paper's Figure 5
+   * (the classical cubic B-spline at alpha = beta = 4); CUSTOM: X, Y, Z at
+   * every knot. The interpolation takes x and y from (3.18) and uses Z only.
+   */
+  vtkSetClampMacro(LocalParameters, int, PAPER, CUSTOM);
+  vtkGetMacro(LocalParameters, int);
+  vtkSetMacro(X, double);
+  vtkGetMacro(X, double);
+  vtkSetMacro(Y, double);
+  vtkGetMacro(Y, double);
+  vtkSetClampMacro(Z, double, 0.0, 1.0);
+  vtkGetMacro(Z, double);
+  ///@}
+
+  ///@{
+  /**
+   * C2 (default) or C2_FC: in APPROXIMATE mode x = y = 0 and
+   * alpha = beta >= FrenetOrder + 3, so the curve is C2 and Frenet frame
+   * continuous of order 2 FrenetOrder + 3 (Theorem 13). FrenetOrder is l >= 1.
+   */
+  vtkSetClampMacro(Continuity, int, C2, C2_FC);
+  vtkGetMacro(Continuity, int);
+  vtkSetClampMacro(FrenetOrder, int, 1, 100);
+  vtkGetMacro(FrenetOrder, int);
+  ///@}
+
+protected:
+  vtkQQRSplineFilter();
+  ~vtkQQRSplineFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+#ifndef __VTK_WRAP__
+  shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
+#endif
+
+  int Mode = INTERPOLATE;
+  bool Automatic = true;
+  double Alpha = 4.0;
+  double Beta = 4.0;
+  double MaxAlpha = 200.0;
+  int LocalParameters = PAPER;
+  double X = 0.0;
+  double Y = 0.0;
+  double Z = 0.5;
+  int Continuity = C2;
+  int FrenetOrder = 1;
+
+private:
+  vtkQQRSplineFilter(const vtkQQRSplineFilter&) = delete;
+  void operator=(const vtkQQRSplineFilter&) = delete;
+};
+
+#endif
