@@ -1,4 +1,5 @@
-"""Speed of the ShapeSplines cubic against vtkSplineFilter and SciPy, on the same input.
+"""Speed and accuracy of the ShapeSplines families against vtkSplineFilter, SciPy and
+finite differences, on the same input.
 
 Run (prints tables of output points per second and ratios, all measured in this run,
 cost growth, memory and accuracy, and writes plots into build/benchmark/):
@@ -122,42 +123,92 @@ def interior(values, fraction=0.25):
     return values[int(n * fraction):int(n * (1 - fraction))]
 
 
+def helix_curve(t):
+    """Helix a = 2, b = 1 and its exact curvature 0.4 and torsion 0.2."""
+    xyz = np.stack([2 * np.cos(t), 2 * np.sin(t), t], axis=-1)
+    return xyz, np.full(len(t), 0.4), np.full(len(t), 0.2)
+
+
+def trefoil_curve(t):
+    """Trefoil knot (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t), with its
+    curvature and torsion from exact derivatives."""
+    xyz = np.stack([np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)], axis=-1)
+    d1 = np.stack([np.cos(t) + 4 * np.cos(2 * t), -np.sin(t) + 4 * np.sin(2 * t), -3 * np.cos(3 * t)], axis=-1)
+    d2 = np.stack([-np.sin(t) - 8 * np.sin(2 * t), -np.cos(t) + 8 * np.cos(2 * t), 9 * np.sin(3 * t)], axis=-1)
+    d3 = np.stack([-np.cos(t) - 16 * np.cos(2 * t), np.sin(t) - 16 * np.sin(2 * t), 27 * np.cos(3 * t)], axis=-1)
+    cross = np.cross(d1, d2)
+    cross2 = np.einsum("ij,ij->i", cross, cross)
+    return xyz, np.sqrt(cross2) / np.linalg.norm(d1, axis=1) ** 3, np.einsum("ij,ij->i", cross, d3) / cross2
+
+
+# Methods compared on the same samples: ours fitted through the filters, and
+# what users do today (vtkSplineFilter then finite differences; finite
+# differences of the raw points, as VMTK's centerline geometry).
+APPROXIMATION_KNOTS_PER_TURN = 6
+METHODS = ("cubic", "VDPS interp.", "VDPS approx.", "quintic approx.", "vtkSpline+FD", "FD raw")
+
+
+def filter_geometry(family, xyz, **properties):
+    algorithm = getattr(simple, family)(Input=simple.Line(), **properties).GetClientSideObject()
+    algorithm.SetInputDataObject(0, to_polydata(xyz[None]))
+    algorithm.Update()
+    out = algorithm.GetOutputDataObject(0)
+    data = out.GetPointData()
+    if out.GetNumberOfPoints() == 0:  # the line was refused (reported by the filter)
+        return None
+    return (vtk_to_numpy(out.GetPoints().GetData()), vtk_to_numpy(data.GetArray("Curvature")),
+            vtk_to_numpy(data.GetArray("Torsion")))
+
+
 def accuracy(turns=6, seed=2):
-    """Median relative torsion (and curvature) error on a helix a = 2, b = 1
-    (curvature 0.4, torsion 0.2), clean and with Gaussian noise (a fraction of
-    the radius), in the middle half of the curve."""
+    """Median torsion error, relative to the exact torsion's RMS (0.2 for the
+    helix), in the middle half of a helix a = 2, b = 1 and of a trefoil knot
+    (one period sampled with as many points as 'turns' turns of the helix),
+    clean and with Gaussian noise (a fraction of the radius, 2 for both), at 8
+    to 64 points per turn. Each sample's exact value is the curve's at its
+    nearest point on a dense sampling of the exact curve."""
+    from scipy.spatial import cKDTree
     rng = np.random.default_rng(seed)
     errors = []
-    print("\nAccuracy on the helix a=2, b=1: median relative error of torsion (curvature) in the middle half")
-    print("%-10s %-6s %20s %24s %20s" % ("noise", "pts/turn", "ours (cubic)", "vtkSplineFilter + FD", "FD on raw points"))
-    for noise in (0.0, 0.005):
-        for per_turn in (8, 16, 32, 64):
-            t = 2 * np.pi * np.arange(turns * per_turn + 1) / per_turn
-            xyz = np.stack([2 * np.cos(t), 2 * np.sin(t), t], axis=-1)
-            xyz = xyz + rng.normal(scale=noise * 2.0, size=xyz.shape)
-            poly = to_polydata(xyz[None])
-            algorithm = simple.CubicSpline(Input=simple.Line()).GetClientSideObject()
-            algorithm.SetInputDataObject(0, poly)
-            algorithm.Update()
-            out = algorithm.GetOutputDataObject(0).GetPointData()
-            ours_k = vtk_to_numpy(out.GetArray("Curvature"))
-            ours_t = vtk_to_numpy(out.GetArray("Torsion"))
-            spline = vtkSplineFilter()
-            spline.SetInputData(poly)
-            spline.SetSubdivideToSpecified()
-            spline.SetNumberOfSubdivisions(len(ours_k) - 1)
-            spline.Update()
-            dense = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
-            vtk_k, vtk_t = finite_difference_geometry(dense)
-            raw_k, raw_t = finite_difference_geometry(xyz)
-            row, row_errors = [], []
-            for k, tau in ((ours_k, ours_t), (vtk_k, vtk_t), (raw_k, raw_t)):
-                et = np.median(np.abs(interior(tau) - 0.2)) / 0.2
-                ek = np.median(np.abs(interior(k) - 0.4)) / 0.4
-                row.append("%8.2g%% (%6.2g%%)" % (100 * et, 100 * ek))
-                row_errors.append(et)
-            print("%-10s %-6d %20s %24s %20s" % ("%.1f%%" % (100 * noise), per_turn, *row))
-            errors.append((noise, per_turn, row_errors))
+    print("\nAccuracy: median torsion error / RMS torsion, middle half (approximations: %d knots per turn, "
+          "fixed degree 5 / tension 1)" % APPROXIMATION_KNOTS_PER_TURN)
+    print("%-8s %-7s %-8s" % ("curve", "noise", "pts/turn") + "".join("%16s" % m for m in METHODS))
+    for curve_name, curve, periods in (("helix", helix_curve, turns), ("trefoil", trefoil_curve, 1)):
+        dense_t = np.linspace(0, 2 * np.pi * periods, 200001)
+        dense, dense_k, dense_tau = curve(dense_t)
+        tree = cKDTree(dense)
+        scale = np.sqrt(np.mean(dense_tau ** 2))  # the trefoil's torsion changes sign
+        for noise in (0.0, 0.001, 0.005, 0.01):
+            for per_turn in (8, 16, 32, 64):
+                count = turns * per_turn
+                t = 2 * np.pi * periods * np.arange(count + 1) / count
+                xyz = curve(t)[0] + rng.normal(scale=noise * 2.0, size=(count + 1, 3))
+                knots = turns * min(per_turn, APPROXIMATION_KNOTS_PER_TURN) + 1
+                fits = [filter_geometry("CubicSpline", xyz),
+                        filter_geometry("VariableDegreeSpline", xyz),
+                        filter_geometry("VariableDegreeSpline", xyz, Mode="Approximate Local",
+                                        NumberOfKnots=knots, AutomaticDegrees=0),
+                        filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=knots,
+                                        Automatic=0)]
+                spline = vtkSplineFilter()
+                spline.SetInputData(to_polydata(xyz[None]))
+                spline.SetSubdivideToSpecified()
+                spline.SetNumberOfSubdivisions(count * SUBDIVISIONS)
+                spline.Update()
+                dense_vtk = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
+                fits.append((dense_vtk, *finite_difference_geometry(dense_vtk)))
+                fits.append((xyz, *finite_difference_geometry(xyz)))
+                row = []
+                for fit in fits:
+                    if fit is None:
+                        row.append(float("nan"))
+                        continue
+                    points, _, tau = fit
+                    exact = dense_tau[tree.query(interior(points))[1]]
+                    row.append(np.median(np.abs(interior(tau) - exact)) / scale)
+                print("%-8s %-7s %-8d" % (curve_name, "%.1f%%" % (100 * noise), per_turn) +
+                      "".join("%15.3g%%" % (100 * e) for e in row))
+                errors.append((curve_name, noise, per_turn, row))
     return errors
 
 
@@ -243,21 +294,23 @@ def plot_accuracy(errors, folder):
     import matplotlib.pyplot as plt
     import matplotlib.ticker
     os.makedirs(folder, exist_ok=True)
-    figure, axes = plt.subplots(figsize=(6, 4))
-    names = ("ours (cubic)", "vtkSplineFilter + FD", "FD on raw points")
-    for noise, style in ((0.0, "-"), (0.005, "--")):
-        rows = [e for e in errors if e[0] == noise]
-        for method, name in enumerate(names):
-            axes.loglog([r[1] for r in rows], [100 * r[2][method] for r in rows], style, marker="o",
-                        color="C%d" % method, label="%s, noise %.1f%%" % (name, 100 * noise))
-    axes.set_xticks([8, 16, 32, 64])
-    axes.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
-    axes.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
-    axes.set_xlabel("points per turn")
-    axes.set_ylabel("median torsion error (%)")
-    axes.set_title("Helix a=2, b=1: torsion error versus density")
-    axes.grid(True, which="both", alpha=0.3)
-    axes.legend(fontsize=7)
+    figure, panels = plt.subplots(2, 2, figsize=(11, 8), sharex=True)
+    for column, curve_name in enumerate(("helix", "trefoil")):
+        for row, noise in enumerate((0.0, 0.005)):
+            axes = panels[row][column]
+            rows = [e for e in errors if e[0] == curve_name and e[1] == noise]
+            for method, name in enumerate(METHODS):
+                axes.loglog([r[2] for r in rows], [100 * r[3][method] for r in rows], marker="o",
+                            color="C%d" % method, label=name)
+            axes.set_xticks([8, 16, 32, 64])
+            axes.xaxis.set_major_formatter(matplotlib.ticker.ScalarFormatter())
+            axes.xaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+            axes.set_title("%s, noise %.1f%%" % (curve_name, 100 * noise))
+            axes.set_ylabel("median torsion error (%)")
+            axes.grid(True, which="both", alpha=0.3)
+            if row == 1:
+                axes.set_xlabel("points per turn")
+    panels[0][0].legend(fontsize=7)
     path = os.path.join(folder, "accuracy.png")
     figure.tight_layout()
     figure.savefig(path, dpi=100)
@@ -279,28 +332,36 @@ def main():
     cases = [("%d lines x 50 points" % args.lines, helix_lines(args.lines, 50), 3)]
     for n in (1000, 4000, 16000):
         cases.append(("1 line x %d points" % n, helix_lines(1, n), 1))
-    print("%-24s %12s %12s %12s %12s %11s %11s %11s %11s %7s %7s %7s %9s %9s" % (
-        "case", "cubic 1 thr", "cubic 2 thr", "vtkSpline", "SciPy", "gencub fix", "gencub auto",
-        "quint fix", "quint auto", "x vtk", "x SciPy", "threads", "gc a/f", "qu a/f"))
+    families = (("cubic", "CubicSpline", None), ("gencubic", "GeneralizedCubicSpline", "AutomaticTension"),
+                ("quintic", "TensionQuinticSpline", "Automatic"), ("vdps", "VariableDegreeSpline", "AutomaticDegrees"),
+                ("qqr", "QQRSpline", "Automatic"))
+    print("Output points per second (2 threads unless said), and ratios measured in this run:")
+    print("%-24s %-9s %11s %11s %9s %9s %9s" % ("case", "family", "fixed", "automatic", "x vtk", "x SciPy",
+                                                "auto cost"))
     for name, xyz, repeats in cases:
         poly = to_polydata(xyz)
         per_line = (xyz.shape[1] - 1) * SUBDIVISIONS + 1
         rates = {}
-        for label, run in (("seq", ours(poly, "Sequential")), ("thr", ours(poly, "STDThread")),
-                           ("vtk", vtk_spline(poly, per_line)), ("scipy", scipy_route(xyz)),
-                           ("fixed", ours(poly, "STDThread", "GeneralizedCubicSpline", AutomaticTension=0)),
-                           ("auto", ours(poly, "STDThread", "GeneralizedCubicSpline")),
-                           ("qfixed", ours(poly, "STDThread", "TensionQuinticSpline", Automatic=0)),
-                           ("qauto", ours(poly, "STDThread", "TensionQuinticSpline"))):
+        runs = [("seq", ours(poly, "Sequential")), ("vtk", vtk_spline(poly, per_line)), ("scipy", scipy_route(xyz))]
+        for family, proxy, automatic in families:
+            if automatic is None:
+                runs.append((family, ours(poly, "STDThread", proxy)))
+            else:
+                runs.append((family, ours(poly, "STDThread", proxy, **{automatic: 0})))
+                runs.append((family + " auto", ours(poly, "STDThread", proxy)))
+        for label, run in runs:
             seconds, points = best_time(run, repeats)
             assert points == per_line * xyz.shape[0], (label, points)
             rates[label] = points / seconds
-        print("%-24s %12.3g %12.3g %12.3g %12.3g %11.3g %11.3g %11.3g %11.3g %6.1fx %6.1fx %6.2fx %8.2fx %8.2fx" % (
-            name, rates["seq"], rates["thr"], rates["vtk"], rates["scipy"], rates["fixed"], rates["auto"],
-            rates["qfixed"], rates["qauto"], rates["thr"] / rates["vtk"], rates["thr"] / rates["scipy"],
-            rates["thr"] / rates["seq"], rates["fixed"] / rates["auto"], rates["qfixed"] / rates["qauto"]))
-    print("(output points per second; x vtk, x SciPy and threads use the cubic with 2 threads;"
-          " a/f: what the automatic mode costs over the fixed one, on helices)")
+        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "vtkSpline", rates["vtk"], "", "", "", ""))
+        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "SciPy", rates["scipy"], "", "", "", ""))
+        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "cubic 1th", rates["seq"], "", "", "", ""))
+        for family, _, automatic in families:
+            auto = rates.get(family + " auto")
+            print("%-24s %-9s %11.3g %11s %8.2fx %8.2fx %9s" % (
+                name, family, rates[family], "%.3g" % auto if auto else "-", rates[family] / rates["vtk"],
+                rates[family] / rates["scipy"], "%.2fx" % (rates[family] / auto) if auto else "-"))
+    print("(x vtk, x SciPy: the fixed mode's rate over theirs; auto cost: fixed rate / automatic rate, on helices)")
     threads_identical(to_polydata(helix_lines(2000, 50)))
     sizes, per_point = growth(args.plugin)
     plot_growth(sizes, per_point, args.output)
