@@ -103,6 +103,22 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
+BuiltCurve fixedOrPreserved(bool automatic, const FitContext& context,
+  const CleanPolyline& reference, const std::function<std::unique_ptr<Curve>()>& build,
+  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds)
+{
+  BuiltCurve built;
+  if (!automatic)
+  {
+    built.Spline = build();
+    return built;
+  }
+  ShapeAudit audit;
+  built.Spline = preserveShape(context, reference, build, tighten, maxRounds, &audit);
+  built.Audit = std::move(audit);
+  return built;
+}
+
 ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference) const
 {
   return auditCurve(curve, reference, discreteShape(reference, this->Options.Tolerances),

@@ -77,6 +77,14 @@ std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyl
   ShapeAudit* lastAudit = nullptr);
 
 /**
+ * What a family's builder returns: build()'s curve as it is (automatic
+ * false), or made shape preserving by preserveShape() with its last audit.
+ */
+BuiltCurve fixedOrPreserved(bool automatic, const FitContext& context,
+  const CleanPolyline& reference, const std::function<std::unique_ptr<Curve>()>& build,
+  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds);
+
+/**
  * A family's curve through one polyline, audited, with its sampling planned
  * but not done: sampleFit() samples it when its output is written, so that
  * no more than one line's samples per thread are ever held.

@@ -427,12 +427,6 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
       return std::make_unique<GeneralizedCubicSpline>(GeneralizedCubicSpline::interpolate(
         context.Data.Points, context.Knots, context.Data.Closed, kernels));
     };
-    BuiltCurve built;
-    if (!options.Automatic || options.Kind == SpaceKind::Polynomial)
-    {
-      built.Spline = build();
-      return built;
-    }
     // Raise the failing spans; a failing span already at the cap needs its
     // neighbours tightened too (the curvature it shares with them at its knots
     // comes from the C2 joins).
@@ -471,10 +465,9 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
       }
       return raised;
     };
-    ShapeAudit audit;
-    built.Spline = preserveShape(context, context.Data, build, tighten, options.MaxRounds, &audit);
-    built.Audit = audit;
-    return built;
+    // The polynomial kind has no tension to raise.
+    return fixedOrPreserved(options.Automatic && options.Kind != SpaceKind::Polynomial, context,
+      context.Data, build, tighten, options.MaxRounds);
   };
 }
 } // namespace shapesplines

@@ -29,21 +29,12 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
     parameters = spline->parameters();
     return spline;
   };
-  BuiltCurve built;
-  if (!quintic.Automatic)
-  {
-    built.Spline = build();
-    return built;
-  }
-  ShapeAudit audit;
-  built.Spline = preserveShape(
-    context, data, build,
+  return fixedOrPreserved(
+    quintic.Automatic, context, data, build,
     [&](const std::vector<char>& failing) {
       return lowerQuinticTension(parameters, failing, data.Closed, quintic.Floor);
     },
-    quintic.MaxRounds, &audit);
-  built.Audit = std::move(audit);
-  return built;
+    quintic.MaxRounds);
 }
 } // namespace
 

@@ -239,13 +239,13 @@ std::vector<Vec3> toPoints(const Eigen::MatrixX3d& solution)
 }
 } // namespace
 
-std::array<Jet, 6> pseudoBernstein(double k, double m, double v)
+std::array<Jet, 6> pseudoBernstein(double k, double m, double v, int order)
 {
   const std::array<double, 6> a = powers(k, v, true);  // (1-v)^(k-n)
   const std::array<double, 6> b = powers(m, v, false); // v^(m-n)
   const double w = 1.0 - v;
   std::array<Jet, 6> out{};
-  for (int n = 0; n < 5; ++n)
+  for (int n = 0; n <= order; ++n)
   {
     const double sign = n % 2 == 0 ? 1.0 : -1.0;
     // B1 = k v g, g = (1-v)^(k-1); B4 = m f (1-v), f = v^(m-1) (Leibniz).
@@ -436,7 +436,7 @@ Derivatives VariableDegreeSpline::evaluateOnSpan(int span, double u, int order) 
   const double v = std::clamp((u - this->Knots[span]) / h, 0.0, 1.0);
   const int knots = static_cast<int>(this->Parameters.Degree.size());
   const auto basis = pseudoBernstein(
-    this->Parameters.Degree[span], this->Parameters.Degree[(span + 1) % knots], v);
+    this->Parameters.Degree[span], this->Parameters.Degree[(span + 1) % knots], v, order);
   const auto& net = this->Net[span];
   Derivatives out;
   out.fill(Vec3::Zero());
@@ -536,21 +536,12 @@ BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOption
       parametersFor(degrees, options, !data.Closed && options.Ends == VariableDegreeEnds::Natural),
       options.Ends));
   };
-  BuiltCurve built;
-  if (!options.Automatic)
-  {
-    built.Spline = build();
-    return built;
-  }
-  ShapeAudit audit;
-  built.Spline = preserveShape(
-    context, data, build,
+  return fixedOrPreserved(
+    options.Automatic, context, data, build,
     [&](const std::vector<char>& failing) {
       return raiseFailing(degrees, failing, data.Closed, options.MaxDegree);
     },
-    options.MaxRounds, &audit);
-  built.Audit = std::move(audit);
-  return built;
+    options.MaxRounds);
 }
 
 BuiltCurve approximateData(const FitContext& context, const VariableDegreeOptions& options,
@@ -603,17 +594,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
     }
     return raised;
   };
-  BuiltCurve built;
-  if (!options.Automatic)
-  {
-    built.Spline = build();
-  }
-  else
-  {
-    ShapeAudit audit;
-    built.Spline = preserveShape(context, psi, build, tighten, options.MaxRounds, &audit);
-    built.Audit = std::move(audit);
-  }
+  BuiltCurve built = fixedOrPreserved(options.Automatic, context, psi, build, tighten, options.MaxRounds);
   built.ShapeReference = std::move(psi);
   return built;
 }

@@ -19,13 +19,14 @@ constexpr double LowestVariableDegree = 5.0;
 /**
  * The pseudo Bernstein basis B_0..B_5 of VP_{k,m} (degree k at the interval's
  * left knot, m at its right one) at the local parameter v in [0, 1]: entry
- * [j][n] is the n-th derivative of B_j. B0 = (1-v)^k, B1 = k v (1-v)^(k-1),
+ * [j][n] is the n-th derivative of B_j (n <= order; the others are left 0).
+ * B0 = (1-v)^k, B1 = k v (1-v)^(k-1),
  * B4 = m v^(m-1) (1-v), B5 = v^m; B2, B3 complete the partition of unity
  * with linear precision at the abscissae 0, 1/k, 2/k, 1-2/m, 1-1/m, 1.
  * k = m = 5 is the quintic Bernstein basis. Powers of 1 - v go through
  * log1p, so no precision is lost near v = 0 for degrees in the hundreds.
  */
-std::array<Jet, 6> pseudoBernstein(double k, double m, double v);
+std::array<Jet, 6> pseudoBernstein(double k, double m, double v, int order = 4);
 
 /// End conditions of an open interpolating curve.
 enum class VariableDegreeEnds : int

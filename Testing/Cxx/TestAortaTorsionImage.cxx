@@ -1,7 +1,8 @@
 // Image regression test: the aorta centerline's spline from one family at
 // its filter's defaults (automatic tension or degrees) coloured by torsion
 // (diverging map centred on zero) with the data points, as a user would look
-// at it. Arguments: quintic|vdps -D <Data dir> -V <baseline.png> -T <temp dir>.
+// at it. Arguments: cubic|quintic|vdps -D <Data dir> -V <baseline.png> -T <temp dir>.
+#include "vtkCubicSplineFilter.h"
 #include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
 
@@ -84,7 +85,11 @@ int TestAortaTorsionImage(int argc, char* argv[])
 {
   const std::string family = argc > 1 ? argv[1] : "";
   vtkSmartPointer<vtkShapeSplineFilter> spline;
-  if (family == "quintic")
+  if (family == "cubic")
+  {
+    spline = vtkSmartPointer<vtkCubicSplineFilter>::New();
+  }
+  else if (family == "quintic")
   {
     spline = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
   }
@@ -94,7 +99,7 @@ int TestAortaTorsionImage(int argc, char* argv[])
   }
   else
   {
-    std::cerr << "ERROR: the first argument must be quintic or vdps.\n";
+    std::cerr << "ERROR: the first argument must be cubic, quintic or vdps.\n";
     return EXIT_FAILURE;
   }
   vtkNew<vtkTesting> testing;
