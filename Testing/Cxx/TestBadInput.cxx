@@ -24,11 +24,11 @@ struct SplineFilter
 {
   std::string Name;
   std::function<vtkSmartPointer<vtkShapeSplineFilter>()> Make;
+  bool Interpolates = true; ///< rows then check that the curve passes through the data
 };
 
 std::vector<SplineFilter> Filters()
 {
-  // Interpolation only: rows check that the curve passes through the data.
   auto quintic = [](int continuity) {
     auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
     filter->SetContinuity(continuity);
@@ -65,7 +65,30 @@ std::vector<SplineFilter> Filters()
        filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
        filter->SetZ(0.3);
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } } };
+     } },
+    { "VariableDegreeApproximateLocal",
+      [] {
+       auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
+       filter->SetModeToApproximateLocal();
+       filter->SetNumberOfKnots(5);
+       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+     },
+      false },
+    { "TensionQuinticApproximate",
+      [] {
+        auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+        filter->SetModeToApproximate();
+        filter->SetNumberOfKnots(5);
+        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+      },
+      false },
+    { "QQRControlPolygon",
+      [] {
+        auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+        filter->SetModeToApproximate();
+        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
+      },
+      false } };
 }
 
 /// A curved, non-planar line (part of a conical helix), scaled and moved.
@@ -92,6 +115,7 @@ struct Outcome
   FilterRun Run;
   vtkPolyData* Input;
   std::function<FilterRun(vtkPolyData*)> Rerun; ///< the same filter on other input
+  bool Interpolates; ///< the filter's curves pass through the data
 };
 
 struct BadInput
@@ -229,9 +253,12 @@ std::vector<BadInput> Table()
       [](const Outcome& o) {
         ExpectGoodLinesProcessed(o.Run.Output, 3);
         ExpectMessage(o.Run.Warnings, { "cell 1", "6 repeated point(s) merged" });
-        // The ends stay where the data end.
+        // An interpolation's ends stay where the data end.
         const IdList line = LinesOf(o.Run.Output)[1];
-        EXPECT_EQ(PointOf(o.Run.Output, line.back()), GoodLine().back());
+        if (o.Interpolates)
+        {
+          EXPECT_EQ(PointOf(o.Run.Output, line.back()), GoodLine().back());
+        }
       } },
     { "ExactlyCollinear",
       [] {
@@ -253,7 +280,8 @@ std::vector<BadInput> Table()
           const Point q = PointOf(o.Run.Output, id);
           offLine = std::max(offLine, Norm(Cross(q, { 1, 2, 3 })) / Norm({ 1, 2, 3 }));
         }
-        EXPECT_LT(offLine, 1e-12 * 15) << "the straight line bends";
+        // Least squares solve normal equations: their condition is squared.
+        EXPECT_LT(offLine, (o.Interpolates ? 1e-12 : 1e-10) * 15) << "the straight line bends";
       } },
     { "ExactlyCoplanar",
       [] {
@@ -386,7 +414,7 @@ TEST_P(BadInputTable, NoCrashNoNaNInputUntouchedClearMessage)
     spline->SetInputData(data);
     return UpdateChecked(data, spline, { spline });
   };
-  Outcome outcome{ run(input), input, run };
+  Outcome outcome{ run(input), input, run, filter.Interpolates };
   ExpectAllFinite(outcome.Run.Output);
   vtkCellData* cd = outcome.Run.Output->GetCellData();
   for (int a = 0; a < cd->GetNumberOfArrays(); ++a)
