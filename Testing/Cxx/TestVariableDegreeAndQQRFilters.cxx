@@ -1,0 +1,173 @@
+// vtkVariableDegreeSplineFilter and vtkQQRSplineFilter through VTK pipelines:
+// their options, their arrays and their warnings.
+#include "FilterTestUtilities.h"
+
+#include "vtkDoubleArray.h"
+#include "vtkQQRSplineFilter.h"
+#include "vtkVariableDegreeSplineFilter.h"
+
+#include <gtest/gtest.h>
+
+using namespace shapesplines::filtertest;
+
+namespace
+{
+template <class Filter>
+FilterRun RunFilter(vtkPolyData* input, const std::function<void(Filter*)>& setup = {})
+{
+  vtkNew<Filter> filter;
+  if (setup)
+  {
+    setup(filter);
+  }
+  filter->SetInputData(input);
+  return UpdateChecked(input, filter, { filter });
+}
+
+using VariableDegree = vtkVariableDegreeSplineFilter;
+using QQR = vtkQQRSplineFilter;
+} // namespace
+
+TEST(VariableDegreeSplineFilter, AutomaticDegreesKeepTheShapeTheQuinticBreaks)
+{
+  for (const char* name : { "akima.vtp", "rpn15a.vtp", "titanium.vtp" })
+  {
+    const auto data = ReadData(name);
+    const FilterRun quintic = RunFilter<VariableDegree>(data, [](VariableDegree* f) { f->AutomaticDegreesOff(); });
+    const FilterRun automatic = RunFilter<VariableDegree>(data);
+    ExpectNoMessages(automatic);
+    const double before = CellArray(quintic.Output, "ShapeViolations")->GetTuple1(0);
+    const double after = CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0);
+    const double maxDegree = CellArray(automatic.Output, "MaxDegree")->GetTuple1(0);
+    Measure(std::string(name) + ": quintic violations", before);
+    Measure(std::string(name) + ": automatic violations", after);
+    Measure(std::string(name) + ": max degree", maxDegree);
+    EXPECT_GT(before, 0) << name;
+    EXPECT_EQ(after, 0) << name;
+    EXPECT_EQ(MaxAbs(PointArray(automatic.Output, "Degree"), DistinctIds(LinesOf(automatic.Output)[0])),
+      maxDegree);
+    EXPECT_EQ(MaxAbs(PointArray(quintic.Output, "Degree"), DistinctIds(LinesOf(quintic.Output)[0])), 5.0);
+  }
+}
+
+TEST(VariableDegreeSplineFilter, DegreePerPointFromAnInputArray)
+{
+  // The helix with degree 30 on point 10, 2 (below the minimum: falls back to Degree) on point 20.
+  const auto data = DeepCopy(ReadData("helix.vtp"));
+  vtkNew<vtkDoubleArray> given;
+  given->SetName("k");
+  given->SetNumberOfTuples(data->GetNumberOfPoints());
+  given->Fill(0.0);
+  given->SetValue(10, 30.0);
+  given->SetValue(20, 2.0);
+  data->GetPointData()->AddArray(given);
+  const FilterRun run = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
+    f->AutomaticDegreesOff();
+    f->SetDegree(6.0);
+    f->SetDegreeArrayName("k");
+  });
+  ExpectNoMessages(run);
+  vtkDataArray* degree = PointArray(run.Output, "Degree");
+  vtkDataArray* span = PointArray(run.Output, "SpanIndex");
+  for (vtkIdType i = 0; i < degree->GetNumberOfTuples(); ++i)
+  {
+    const int j = static_cast<int>(span->GetTuple1(i));
+    ASSERT_EQ(degree->GetTuple1(i), j == 9 || j == 10 ? 30.0 : 6.0) << "sample " << i << " span " << j;
+  }
+}
+
+TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsi)
+{
+  const auto data = ReadData("aorta-centerline.vtp");
+  const FilterRun fixed = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
+    f->SetModeToApproximateLocal();
+    f->SetNumberOfKnots(40);
+    f->AutomaticDegreesOff();
+  });
+  for (vtkIdType c = 0; c < 2; ++c)
+  {
+    Measure("aorta line " + std::to_string(c) + ", degree 5: violations of psi",
+      CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c));
+    EXPECT_GT(CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c), 0);
+  }
+  for (const int mode : { VariableDegree::APPROXIMATE_GLOBAL, VariableDegree::APPROXIMATE_LOCAL })
+  {
+    const FilterRun run = RunFilter<VariableDegree>(data, [mode](VariableDegree* f) {
+      f->SetMode(mode);
+      f->SetNumberOfKnots(40);
+      f->SetNumberOfSubdivisions(4);
+    });
+    EXPECT_TRUE(run.Errors.empty()) << Joined(run.Errors);
+    ExpectAllFinite(run.Output);
+    const auto lines = LinesOf(run.Output);
+    ASSERT_EQ(lines.size(), 2u);
+    for (size_t c = 0; c < lines.size(); ++c)
+    {
+      // 40 knots, 39 spans of 4 samples: the approximation's own knots, not the data's.
+      EXPECT_EQ(lines[c].size(), 39u * 4u + 1u) << "line " << c;
+      Measure("aorta line " + std::to_string(c) + ", mode " + std::to_string(mode) + ": violations of psi",
+        CellArray(run.Output, "ShapeViolations")->GetTuple1(c));
+      EXPECT_EQ(CellArray(run.Output, "ShapeViolations")->GetTuple1(c), 0) << "line " << c;
+    }
+  }
+}
+
+TEST(VariableDegreeSplineFilter, SettingsTheAutomaticModeCannotUseAreReported)
+{
+  const auto data = ReadData("helix.vtp");
+  const FilterRun capped = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
+    f->SetDegree(20.0);
+    f->SetMaxDegree(10.0);
+  });
+  EXPECT_EQ(CountMessages(capped.Warnings, { "MaxDegree", "cannot raise" }), 1) << Joined(capped.Warnings);
+  const FilterRun array = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
+    f->SetModeToApproximateGlobal();
+    f->SetDegreeArrayName("Anything");
+  });
+  EXPECT_EQ(CountMessages(array.Warnings, { "DegreeArrayName", "interpolation only" }), 1)
+    << Joined(array.Warnings);
+  vtkNew<VariableDegree> clamped;
+  clamped->SetDegree(2.0);
+  clamped->SetLambda(-1.0);
+  EXPECT_EQ(clamped->GetDegree(), 5.0);
+  EXPECT_EQ(clamped->GetLambda(), 0.001);
+}
+
+TEST(QQRSplineFilter, InterpolatesAndWritesItsExponents)
+{
+  const auto data = ReadData("akima.vtp");
+  const FilterRun run = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
+  ExpectNoMessages(run);
+  const auto line = LinesOf(run.Output)[0];
+  ExpectDataPointsAmongSamples(PointsOfLine(data, LinesOf(data)[0]), run.Output, line, 10);
+  EXPECT_EQ(MaxAbs(PointArray(run.Output, "Alpha"), DistinctIds(line)), 4.0);
+  EXPECT_EQ(CellArray(run.Output, "MaxAlpha")->GetTuple1(0), 4.0);
+  const FilterRun automatic = RunFilter<QQR>(data);
+  Measure("Akima, qqr interpolation: alpha = 4 violations",
+    CellArray(run.Output, "ShapeViolations")->GetTuple1(0));
+  Measure("Akima, qqr interpolation: automatic violations",
+    CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0));
+  EXPECT_LE(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0),
+    CellArray(run.Output, "ShapeViolations")->GetTuple1(0));
+}
+
+TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
+{
+  const auto data = ReadData("helix.vtp");
+  const FilterRun frenet = RunFilter<QQR>(data, [](QQR* f) {
+    f->SetModeToApproximate();
+    f->AutomaticOff();
+    f->SetContinuity(QQR::C2_FC);
+    f->SetFrenetOrder(2);
+  });
+  ExpectNoMessages(frenet);
+  EXPECT_EQ(CellArray(frenet.Output, "MaxAlpha")->GetTuple1(0), 5.0); // l + 3
+  const FilterRun interpolation = RunFilter<QQR>(data, [](QQR* f) { f->SetContinuity(QQR::C2_FC); });
+  EXPECT_EQ(CountMessages(interpolation.Warnings, { "C2_FC", "using C2" }), 1)
+    << Joined(interpolation.Warnings);
+  const FilterRun low = RunFilter<QQR>(data, [](QQR* f) {
+    f->AutomaticOff();
+    f->SetAlpha(2.5);
+  });
+  EXPECT_EQ(CountMessages(low.Warnings, { "at or below 3" }), 1) << Joined(low.Warnings);
+}
