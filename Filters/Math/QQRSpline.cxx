@@ -360,32 +360,49 @@ QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vec
   bool closed, double alpha, double beta, const Local& local)
 {
   const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, false);
+  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, {}, false);
 }
 
 QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
   bool closed, const std::vector<double>& knotExponents, const Local& local)
 {
+  return approximate(points, knots, closed, knotExponents, local, QQRKnotShape{});
+}
+
+QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+  bool closed, const std::vector<double>& knotExponents, const Local& local,
+  const QQRKnotShape& knotShape)
+{
   return build(points, knots, closed,
-    knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, false);
+    knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, knotShape,
+    false);
 }
 
 QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
   bool closed, double alpha, double beta, const Local& local)
 {
   const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, true);
+  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, {}, true);
 }
 
 QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
   bool closed, const std::vector<double>& knotExponents, const Local& local)
 {
+  return interpolate(points, knots, closed, knotExponents, local, QQRKnotShape{});
+}
+
+QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
+  bool closed, const std::vector<double>& knotExponents, const Local& local,
+  const QQRKnotShape& knotShape)
+{
   return build(points, knots, closed,
-    knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, true);
+    knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, knotShape,
+    true);
 }
 
 QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, std::vector<std::array<double, 2>> exponents, const Local& local, bool interpolate)
+  bool closed, std::vector<std::array<double, 2>> exponents, const Local& local,
+  const QQRKnotShape& knotShape, bool interpolate)
 {
   const int n = static_cast<int>(points.size());
   const int spans = closed ? n : n - 1;
@@ -407,6 +424,18 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   for (const double value : { local.X, local.Y, local.Z })
   {
     if (std::isinf(value))
+    {
+      throw std::invalid_argument("qqr: local shape parameters must be finite (or NaN: the paper's)");
+    }
+  }
+  for (const auto* values : { &knotShape.X, &knotShape.Y, &knotShape.Z })
+  {
+    if (!values->empty() && static_cast<int>(values->size()) != n)
+    {
+      throw std::invalid_argument("qqr: local shape parameters per point need one value per point (" +
+        std::to_string(n) + "), got " + std::to_string(values->size()));
+    }
+    if (std::any_of(values->begin(), values->end(), [](double v) { return std::isinf(v); }))
     {
       throw std::invalid_argument("qqr: local shape parameters must be finite (or NaN: the paper's)");
     }
@@ -435,7 +464,21 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   };
   auto mu = [&](int i) { return H(i) / (H(i) + H(i + 1)); };
   auto ups = [&](int i) { return H(i + 1) / (H(i) + H(i + 1)); };
+  // The value per point at the paper's index i (point i - 1, QQRKnotShape), or NaN.
+  auto perPoint = [&](const std::vector<double>& values, int i) {
+    int j = i - 1;
+    if (closed)
+    {
+      j = wrap(j, n);
+    }
+    return values.empty() || j < 0 || j >= n ? std::numeric_limits<double>::quiet_NaN() : values[j];
+  };
   auto Z = [&](int i) {
+    const double z = perPoint(knotShape.Z, i);
+    if (!std::isnan(z))
+    {
+      return z;
+    }
     return std::isnan(local.Z) ? (2.0 * H(i) + H(i + 1)) / (2.0 * (H(i) + H(i + 1) + H(i + 2)))
                                : local.Z;
   };
@@ -444,12 +487,22 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     {
       return -H(i) * Z(i) / (2.0 * H(i + 1)); // (3.18) with its missing 1/2
     }
+    const double x = perPoint(knotShape.X, i);
+    if (!std::isnan(x))
+    {
+      return x;
+    }
     return std::isnan(local.X) ? H(i) / (4.0 * (H(i) + H(i + 1) + H(i + 2))) : local.X;
   };
   auto Y = [&](int i) {
     if (interpolate)
     {
       return -H(i + 1) * (1.0 - Z(i - 1)) / (2.0 * H(i)); // (3.18)
+    }
+    const double y = perPoint(knotShape.Y, i);
+    if (!std::isnan(y))
+    {
+      return y;
     }
     return std::isnan(local.Y) ? H(i + 1) / (4.0 * (H(i - 1) + H(i) + H(i + 1))) : local.Y;
   };
@@ -466,6 +519,16 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
 
   QQRSpline spline(knots, closed);
   spline.Exponents = std::move(exponents);
+  for (auto* values : { &spline.KnotShape.X, &spline.KnotShape.Y, &spline.KnotShape.Z })
+  {
+    values->resize(n);
+  }
+  for (int j = 0; j < n; ++j)
+  {
+    spline.KnotShape.X[j] = X(j + 1);
+    spline.KnotShape.Y[j] = Y(j + 1);
+    spline.KnotShape.Z[j] = Z(j + 1);
+  }
   spline.Bezier.resize(spans);
   for (int k = 0; k < spans; ++k)
   {
@@ -543,6 +606,17 @@ double QQRSpline::speedRatio(int span) const
   return slowest;
 }
 
+namespace
+{
+/// One round of the automatic mode on a local parameter: half the way to its
+/// target, the target itself once within 1/1024 of it.
+double halfwayTo(double value, double target)
+{
+  const double next = 0.5 * (value + target);
+  return std::abs(next - target) < 1.0 / 1024.0 ? target : next;
+}
+} // namespace
+
 CurveBuilder qqrBuilder(const QQROptions& options)
 {
   checkExponent(options.Alpha, "Alpha");
@@ -553,32 +627,39 @@ CurveBuilder qqrBuilder(const QQROptions& options)
   }
   return [options](const FitContext& context) {
     const CleanPolyline& data = context.Data;
+    const bool closed = data.Closed;
     const int n = static_cast<int>(data.Points.size());
     const int spans = data.numberOfSpans();
     const QQRSpline::Local local{ options.X, options.Y, options.Z };
-    auto make = [&](const std::vector<double>& kappa) {
-      if (!options.Automatic)
-      {
-        return std::make_unique<QQRSpline>(options.Interpolate
-            ? QQRSpline::interpolate(data.Points, context.Knots, data.Closed, options.Alpha, options.Beta, local)
-            : QQRSpline::approximate(data.Points, context.Knots, data.Closed, options.Alpha, options.Beta, local));
-      }
-      return std::make_unique<QQRSpline>(options.Interpolate
-          ? QQRSpline::interpolate(data.Points, context.Knots, data.Closed, kappa, local)
-          : QQRSpline::approximate(data.Points, context.Knots, data.Closed, kappa, local));
-    };
     BuiltCurve built;
     if (!options.Interpolate)
     {
       built.ShapeReference = data; // the control polygon is the shape of reference
     }
-    // Automatic: alpha = beta at every knot (C2), from the larger of Alpha and Beta.
-    std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
     if (!options.Automatic)
     {
-      built.Spline = make(kappa);
+      built.Spline = std::make_unique<QQRSpline>(options.Interpolate
+          ? QQRSpline::interpolate(data.Points, context.Knots, closed, options.Alpha, options.Beta, local)
+          : QQRSpline::approximate(data.Points, context.Knots, closed, options.Alpha, options.Beta, local));
       return built;
     }
+    // Automatic: alpha = beta at every knot (C2), from the larger of Alpha and
+    // Beta, and the local shape parameters per point (QQRKnotShape), from the
+    // options' (or the paper's) values.
+    std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
+    QQRKnotShape shape;
+    auto make = [&]() {
+      return std::make_unique<QQRSpline>(options.Interpolate
+          ? QQRSpline::interpolate(data.Points, context.Knots, closed, kappa, local, shape)
+          : QQRSpline::approximate(data.Points, context.Knots, closed, kappa, local, shape));
+    };
+    shape = make()->knotShape();
+    if (options.Interpolate)
+    {
+      shape.X.clear(); // (3.18) makes them from Z
+      shape.Y.clear();
+    }
+
     // Decision (measured, see the tests): a large exponent does not tighten the
     // curve towards the data polygon. Each span tends to its Bezier polygon
     // E0..E4 with a corner at E2, approached with a speed ~ alpha^2 2^-alpha
@@ -586,15 +667,32 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     // (x, y < 0) that corner even turns the wrong way on convex data. Where
     // the speed is that small the audit counts any curvature as flat (its
     // rounding threshold grows as 1 / speed^2) and passes a curve with
-    // curvature 1e50. So, beyond the brief's "raise until the audit passes or
-    // MaxAlpha": a raise that makes a span slower than RegularSpeed of its
-    // Bezier polygon is undone and its knots are frozen, and the curve
-    // returned is the regular one with the fewest failing spans seen (ties:
-    // the earliest, i.e. the smallest exponents).
+    // curvature 1e50.
+    //
+    // What does pull a span k towards its chord are the local parameters
+    // (QQRKnotShape): its Bezier points lie on the chord's line when
+    // Z[k-1] = 1 and Z[k+1] = 0 (the middle Bezier points of the spans on
+    // either side move onto D_k and D_{k+1}), and for the control polygon also
+    // Y[k] = 0 and X[k+1] = 0 (S_k, S_{k+1} on the line; the x_i = z_i = 0
+    // next to a straight run suggested for Akima's data is X[k+1] = Z[k+1] = 0,
+    // the right end of that condition; the left end needs Y[k] = 0,
+    // Z[k-1] = 1). In the interpolation the tangent at D_k then follows the
+    // chord of span k alone, and its second derivative (3.21) too. So each
+    // round, per failing span, those parameters go half the way to their
+    // targets (halfwayTo). A parameter pulled both ways (Z[k] by failing spans
+    // k - 1 and k + 1) stays. Only when none of a failing span's parameters
+    // can move any more are the exponents at its two knots raised.
+    //
+    // Both can make a curve irregular: Z[k-1] -> 1 with Z[k] -> 0 stops the
+    // interpolation at D_k, large exponents stop a span mid-way. A change that
+    // makes a span slower than RegularSpeed of its Bezier polygon is undone and
+    // the parameters of that span are frozen, and the curve returned is the
+    // regular one with the fewest violations seen (ties: fewer failing spans,
+    // then the earliest).
     constexpr double RegularSpeed = 1e-3;
     const QQRSpline* last = nullptr;
     auto build = [&]() -> std::unique_ptr<Curve> {
-      auto curve = make(kappa);
+      auto curve = make();
       last = curve.get();
       return curve;
     };
@@ -609,52 +707,150 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       }
       return slow;
     };
-    std::vector<double> previous = kappa;
+    // The parameters: 0 kappa, 1 X, 2 Y, 3 Z, one per point each.
+    std::array<std::vector<double>*, 4> values{ &kappa, &shape.X, &shape.Y, &shape.Z };
+    std::array<std::vector<double>, 4> previous;
+    std::array<std::vector<char>, 4> frozen;
+    for (int v = 0; v < 4; ++v)
+    {
+      previous[v] = *values[v];
+      frozen[v].assign(values[v]->size(), 0);
+    }
+    // Point j + offset of span k, or -1 where the open line has none (or it
+    // does not matter: D_{-1} = D_0 removes Y[0], D_n = D_{n-1} X[n-1]).
+    auto point = [&](int k, int offset) {
+      const int j = k + offset;
+      return closed ? (j + n) % n : (j < 0 || j >= n ? -1 : j);
+    };
+    auto spanIndex = [&](int k, int offset) { // Z: one per span
+      const int j = k + offset;
+      return closed ? (j + n) % n : (j < 0 || j >= spans ? -1 : j);
+    };
+    // Every parameter span k depends on: (kind, index).
+    auto parametersOf = [&](int k) {
+      std::vector<std::pair<int, int>> list;
+      for (const int j : { point(k, 0), point(k, 1) })
+      {
+        list.emplace_back(0, j);
+        if (!options.Interpolate)
+        {
+          list.emplace_back(1, j);
+          list.emplace_back(2, j);
+        }
+      }
+      for (const int offset : { -1, 0, 1 })
+      {
+        list.emplace_back(3, spanIndex(k, offset));
+      }
+      return list;
+    };
     std::vector<double> best = kappa;
-    int bestFailing = std::numeric_limits<int>::max();
-    std::vector<char> frozen(n, 0);
-    auto knotsOf = [&](int k) { return std::array<int, 2>{ k, (k + 1) % n }; };
+    QQRKnotShape bestShape = shape;
+    std::pair<int, int> bestScore{ std::numeric_limits<int>::max(), 0 };
     auto tighten = [&](const std::vector<char>& failing) {
-      // The curve just built: undo the last raise where it made a span irregular.
+      // The curve just built: undo the last change where it made a span irregular.
       bool reverted = false;
       for (const int k : irregularSpans(*last))
       {
-        for (const int j : knotsOf(k))
+        for (const auto& [v, j] : parametersOf(k))
         {
-          if (kappa[j] != previous[j])
+          if (j < 0)
           {
-            kappa[j] = previous[j];
+            continue;
+          }
+          if ((*values[v])[j] != previous[v][j])
+          {
+            (*values[v])[j] = previous[v][j];
             reverted = true;
           }
-          frozen[j] = 1;
+          frozen[v][j] = 1;
         }
       }
       if (reverted)
       {
-        return true; // rebuild the reverted curve before raising again
+        return true; // rebuild the reverted curve before changing more
       }
       const int failingSpans = static_cast<int>(std::count(failing.begin(), failing.end(), 1));
-      if (failingSpans < bestFailing && irregularSpans(*last).empty())
+      const std::pair<int, int> score{ context.audit(*last, data).violations(), failingSpans };
+      if (score < bestScore)
       {
-        bestFailing = failingSpans;
+        bestScore = score;
         best = kappa;
+        bestShape = shape;
       }
-      // A span depends on the exponents at its two knots only (its Bezier
-      // points do not depend on them): raise both.
-      previous = kappa;
-      bool raised = false;
+      for (int v = 0; v < 4; ++v)
+      {
+        previous[v] = *values[v];
+      }
+      // Pulls: bit 0 towards 0, bit 1 towards 1, per local parameter.
+      std::array<std::vector<unsigned>, 4> pull;
+      for (int v = 1; v < 4; ++v)
+      {
+        pull[v].assign(values[v]->size(), 0u);
+      }
+      auto wish = [&](int v, int j, double target) {
+        if (j >= 0 && !pull[v].empty())
+        {
+          pull[v][j] |= target == 0.0 ? 1u : 2u;
+        }
+      };
       for (int k = 0; k < spans; ++k)
       {
-        for (const int j : knotsOf(k))
+        if (failing[k])
         {
-          if (failing[k] && !frozen[j] && kappa[j] < options.MaxAlpha && kappa[j] == previous[j])
+          wish(3, spanIndex(k, -1), 1.0);
+          wish(3, spanIndex(k, 1), 0.0);
+          if (!options.Interpolate)
           {
-            kappa[j] = raisedQQRExponent(kappa[j], options.MaxAlpha);
-            raised = true;
+            wish(2, closed || k > 0 ? point(k, 0) : -1, 0.0);
+            wish(1, closed || k + 1 < n - 1 ? point(k, 1) : -1, 0.0);
           }
         }
       }
-      return raised;
+      bool changed = false;
+      std::vector<char> spanMoved(spans, 0);
+      for (int v = 1; v < 4; ++v)
+      {
+        for (size_t j = 0; j < pull[v].size(); ++j)
+        {
+          const unsigned p = pull[v][j];
+          const double target = p == 1u ? 0.0 : 1.0;
+          double& value = (*values[v])[j];
+          if ((p == 1u || p == 2u) && !frozen[v][j] && value != target)
+          {
+            value = halfwayTo(value, target);
+            changed = true;
+          }
+        }
+      }
+      for (int k = 0; k < spans; ++k)
+      {
+        for (const auto& [v, j] : parametersOf(k))
+        {
+          if (v > 0 && j >= 0 && (*values[v])[j] != previous[v][j])
+          {
+            spanMoved[k] = 1;
+          }
+        }
+      }
+      // The exponents, where a failing span's local parameters are exhausted.
+      // A span depends on the exponents at its two knots only: raise both.
+      for (int k = 0; k < spans; ++k)
+      {
+        if (!failing[k] || spanMoved[k])
+        {
+          continue;
+        }
+        for (const int j : { point(k, 0), point(k, 1) })
+        {
+          if (!frozen[0][j] && kappa[j] < options.MaxAlpha && kappa[j] == previous[0][j])
+          {
+            kappa[j] = raisedQQRExponent(kappa[j], options.MaxAlpha);
+            changed = true;
+          }
+        }
+      }
+      return changed;
     };
     ShapeAudit audit;
     built.Spline = preserveShape(context, data, build, tighten, options.MaxRounds, &audit);
@@ -662,9 +858,12 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     const int lastFailing = static_cast<int>(
       std::count_if(audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; }));
     const bool lastRegular = irregularSpans(*last).empty();
-    if (!(lastRegular && lastFailing < bestFailing) && kappa != best)
+    const std::pair<int, int> lastScore{ audit.violations(), lastFailing };
+    if (!(lastRegular && lastScore < bestScore) &&
+      (kappa != best || shape.X != bestShape.X || shape.Y != bestShape.Y || shape.Z != bestShape.Z))
     {
       kappa = best;
+      shape = bestShape;
       built.Spline = build();
       audit = context.audit(*built.Spline, data);
     }
