@@ -608,12 +608,19 @@ double QQRSpline::speedRatio(int span) const
 
 namespace
 {
-/// One round of the automatic mode on a local parameter: half the way to its
+/// One step of the automatic mode on a local parameter: half the way to its
 /// target, the target itself once within 1/1024 of it.
 double halfwayTo(double value, double target)
 {
   const double next = 0.5 * (value + target);
   return std::abs(next - target) < 1.0 / 1024.0 ? target : next;
+}
+
+/// An exponent lowered by one step of the automatic mode: half the way to 3
+/// (where the basis turns cubic), not below minAlpha.
+double loweredQQRExponent(double alpha, double minAlpha)
+{
+  return std::max(minAlpha, 3.0 + 0.5 * (alpha - 3.0));
 }
 } // namespace
 
@@ -624,6 +631,11 @@ CurveBuilder qqrBuilder(const QQROptions& options)
   if (options.Automatic)
   {
     checkExponent(options.MaxAlpha, "MaxAlpha");
+    if (!(options.MinAlpha > 3.0) || !std::isfinite(options.MinAlpha))
+    {
+      throw std::invalid_argument("qqr: MinAlpha must be a finite number > 3 (C2 joins, Theorem 1 "
+                                  "(5)), got " + std::to_string(options.MinAlpha));
+    }
   }
   return [options](const FitContext& context) {
     const CleanPolyline& data = context.Data;
@@ -646,227 +658,218 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     // Automatic: alpha = beta at every knot (C2), from the larger of Alpha and
     // Beta, and the local shape parameters per point (QQRKnotShape), from the
     // options' (or the paper's) values.
+    //
+    // Decisions (measured, see the tests):
+    //
+    // 1. A large exponent does not tighten the curve towards the data polygon.
+    // Each span tends to its Bezier polygon E0..E4 with a corner at E2,
+    // approached with a speed ~ alpha^2 2^-alpha (1e-18 of the chord speed at
+    // alpha = 68); for the local interpolation (x, y < 0) that corner even
+    // turns the wrong way on convex data, where alpha = 4 already touches zero
+    // curvature mid-span and alpha < 4 keeps it positive. So the exponent at a
+    // knot may also be lowered (loweredQQRExponent, down to MinAlpha > 3,
+    // which keeps C2), not only raised.
+    //
+    // 2. What pulls a span k towards its chord are the local parameters
+    // (QQRKnotShape): its Bezier points lie on the chord's line when
+    // Z[k-1] = 1 and Z[k+1] = 0 (the middle Bezier points of the spans on
+    // either side move onto D_k and D_{k+1}), and for the control polygon also
+    // Y[k] = 0 and X[k+1] = 0 (S_k, S_{k+1} on the line). The suggested
+    // x_i = z_i = 0 next to Akima's straight run is X[k+1] = Z[k+1] = 0, the
+    // right end of that condition (checked: it makes the control-polygon
+    // curve's last span of the run straight); the left end of a run needs
+    // Y[k] = 0, Z[k-1] = 1. In the interpolation the tangent (3.20) at D_k
+    // then follows the chord of span k alone, and its second derivative (3.21)
+    // too (Z[k] alone only slides the middle point along the chord).
+    //
+    // 3. Those targets conflict: Z[k] is pulled to 0 by a failing span k - 1
+    // and to 1 by a failing span k + 1, and Z[k-1] = 1 with Z[k] = 0 stops the
+    // interpolation at D_k (its tangent (3.20) vanishes). On Akima's data the
+    // curve without violations has the middle point of the span after the run
+    // on the run's end (Z[5] = 0) but Z[4] = 0 too, against the halving rule
+    // of span 5. So the rule alone does not get there; each round is a sweep
+    // over the failing spans (collinearity first) that tries, per span, every
+    // step of its parameters: the chord-following ones (Z[k-1] and Z[k+1] half
+    // way to 1 and 0, for the control polygon Y[k] and X[k+1] half way to 0),
+    // the opposite ones, Z[k] either way, and the exponents at its two knots
+    // raised or lowered. The step that lowers the score (violations, then
+    // failing spans) most is taken; if none lowers it, a chord-following step
+    // that keeps it is taken (several are needed before a straight span is
+    // exactly straight), never against an earlier such step of that parameter,
+    // so the search ends. A step that makes a span nearby slower than
+    // RegularSpeed of its Bezier polygon is refused: it would approach a
+    // corner, where the audit counts any curvature as rounding (its threshold
+    // grows as 1 / speed^2) and passes curvatures of 1e50.
+    //
+    // 4. Cost: each step tried is a rebuild and an audit of the whole curve;
+    // the search stops after EvaluationBudget of span audits (about 60 sweeps
+    // of a 10-point line, fewer for long lines) or MaxRounds sweeps.
+    constexpr double RegularSpeed = 1e-3;
+    constexpr double EvaluationBudget = 2e5;
     std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
     QQRKnotShape shape;
-    auto make = [&]() {
+    auto make = [&](const std::vector<double>& exponents, const QQRKnotShape& knotShape) {
       return std::make_unique<QQRSpline>(options.Interpolate
-          ? QQRSpline::interpolate(data.Points, context.Knots, closed, kappa, local, shape)
-          : QQRSpline::approximate(data.Points, context.Knots, closed, kappa, local, shape));
+          ? QQRSpline::interpolate(data.Points, context.Knots, closed, exponents, local, knotShape)
+          : QQRSpline::approximate(data.Points, context.Knots, closed, exponents, local, knotShape));
     };
-    shape = make()->knotShape();
+    shape = make(kappa, shape)->knotShape();
     if (options.Interpolate)
     {
       shape.X.clear(); // (3.18) makes them from Z
       shape.Y.clear();
     }
+    auto build = [&]() -> std::unique_ptr<Curve> { return make(kappa, shape); };
 
-    // Decision (measured, see the tests): a large exponent does not tighten the
-    // curve towards the data polygon. Each span tends to its Bezier polygon
-    // E0..E4 with a corner at E2, approached with a speed ~ alpha^2 2^-alpha
-    // (1e-18 of the chord speed at alpha = 68); for the local interpolation
-    // (x, y < 0) that corner even turns the wrong way on convex data. Where
-    // the speed is that small the audit counts any curvature as flat (its
-    // rounding threshold grows as 1 / speed^2) and passes a curve with
-    // curvature 1e50.
-    //
-    // What does pull a span k towards its chord are the local parameters
-    // (QQRKnotShape): its Bezier points lie on the chord's line when
-    // Z[k-1] = 1 and Z[k+1] = 0 (the middle Bezier points of the spans on
-    // either side move onto D_k and D_{k+1}), and for the control polygon also
-    // Y[k] = 0 and X[k+1] = 0 (S_k, S_{k+1} on the line; the x_i = z_i = 0
-    // next to a straight run suggested for Akima's data is X[k+1] = Z[k+1] = 0,
-    // the right end of that condition; the left end needs Y[k] = 0,
-    // Z[k-1] = 1). In the interpolation the tangent at D_k then follows the
-    // chord of span k alone, and its second derivative (3.21) too. So each
-    // round, per failing span, those parameters go half the way to their
-    // targets (halfwayTo). A parameter pulled both ways (Z[k] by failing spans
-    // k - 1 and k + 1) stays. Only when none of a failing span's parameters
-    // can move any more are the exponents at its two knots raised.
-    //
-    // Both can make a curve irregular: Z[k-1] -> 1 with Z[k] -> 0 stops the
-    // interpolation at D_k, large exponents stop a span mid-way. A change that
-    // makes a span slower than RegularSpeed of its Bezier polygon is undone and
-    // the parameters of that span are frozen, and the curve returned is the
-    // regular one with the fewest violations seen (ties: fewer failing spans,
-    // then the earliest).
-    constexpr double RegularSpeed = 1e-3;
-    const QQRSpline* last = nullptr;
-    auto build = [&]() -> std::unique_ptr<Curve> {
-      auto curve = make();
-      last = curve.get();
-      return curve;
-    };
-    auto irregularSpans = [&](const QQRSpline& curve) {
-      std::vector<int> slow;
-      for (int k = 0; k < spans; ++k)
-      {
-        if (curve.speedRatio(k) < RegularSpeed)
-        {
-          slow.push_back(k);
-        }
-      }
-      return slow;
-    };
-    // The parameters: 0 kappa, 1 X, 2 Y, 3 Z, one per point each.
-    std::array<std::vector<double>*, 4> values{ &kappa, &shape.X, &shape.Y, &shape.Z };
-    std::array<std::vector<double>, 4> previous;
-    std::array<std::vector<char>, 4> frozen;
-    for (int v = 0; v < 4; ++v)
-    {
-      previous[v] = *values[v];
-      frozen[v].assign(values[v]->size(), 0);
-    }
-    // Point j + offset of span k, or -1 where the open line has none (or it
-    // does not matter: D_{-1} = D_0 removes Y[0], D_n = D_{n-1} X[n-1]).
+    // Point k + offset, or -1 where the open line has none.
     auto point = [&](int k, int offset) {
       const int j = k + offset;
       return closed ? (j + n) % n : (j < 0 || j >= n ? -1 : j);
     };
-    auto spanIndex = [&](int k, int offset) { // Z: one per span
+    auto span = [&](int k, int offset) {
       const int j = k + offset;
-      return closed ? (j + n) % n : (j < 0 || j >= spans ? -1 : j);
+      return closed ? (j + spans) % spans : (j < 0 || j >= spans ? -1 : j);
     };
-    // Every parameter span k depends on: (kind, index).
-    auto parametersOf = [&](int k) {
-      std::vector<std::pair<int, int>> list;
-      for (const int j : { point(k, 0), point(k, 1) })
-      {
-        list.emplace_back(0, j);
-        if (!options.Interpolate)
-        {
-          list.emplace_back(1, j);
-          list.emplace_back(2, j);
-        }
-      }
-      for (const int offset : { -1, 0, 1 })
-      {
-        list.emplace_back(3, spanIndex(k, offset));
-      }
-      return list;
+    // A step: parameter kind (0 kappa, 1 X, 2 Y, 3 Z), index, new value, and
+    // for a chord-following step its direction (+-1; 0 for the others).
+    struct Step
+    {
+      int Kind, Index;
+      double Value;
+      int Chord;
     };
-    std::vector<double> best = kappa;
-    QQRKnotShape bestShape = shape;
-    std::pair<int, int> bestScore{ std::numeric_limits<int>::max(), 0 };
-    auto tighten = [&](const std::vector<char>& failing) {
-      // The curve just built: undo the last change where it made a span irregular.
-      bool reverted = false;
-      for (const int k : irregularSpans(*last))
-      {
-        for (const auto& [v, j] : parametersOf(k))
+    std::array<std::vector<double>*, 4> values{ &kappa, &shape.X, &shape.Y, &shape.Z };
+    std::array<std::vector<int>, 4> direction; // of the chord-following steps so far
+    for (int v = 0; v < 4; ++v)
+    {
+      direction[v].assign(values[v]->size(), 0);
+    }
+    auto stepsOf = [&](int k) {
+      std::vector<Step> steps;
+      auto add = [&](int kind, int index, double target, bool chord) {
+        if (index < 0)
         {
-          if (j < 0)
-          {
-            continue;
-          }
-          if ((*values[v])[j] != previous[v][j])
-          {
-            (*values[v])[j] = previous[v][j];
-            reverted = true;
-          }
-          frozen[v][j] = 1;
+          return;
         }
-      }
-      if (reverted)
-      {
-        return true; // rebuild the reverted curve before changing more
-      }
-      const int failingSpans = static_cast<int>(std::count(failing.begin(), failing.end(), 1));
-      const std::pair<int, int> score{ context.audit(*last, data).violations(), failingSpans };
-      if (score < bestScore)
-      {
-        bestScore = score;
-        best = kappa;
-        bestShape = shape;
-      }
-      for (int v = 0; v < 4; ++v)
-      {
-        previous[v] = *values[v];
-      }
-      // Pulls: bit 0 towards 0, bit 1 towards 1, per local parameter.
-      std::array<std::vector<unsigned>, 4> pull;
-      for (int v = 1; v < 4; ++v)
-      {
-        pull[v].assign(values[v]->size(), 0u);
-      }
-      auto wish = [&](int v, int j, double target) {
-        if (j >= 0 && !pull[v].empty())
+        const double now = (*values[kind])[index];
+        const double next = kind == 0 ? target : halfwayTo(now, target);
+        if (next != now)
         {
-          pull[v][j] |= target == 0.0 ? 1u : 2u;
+          steps.push_back({ kind, index, next, chord ? (target > now ? 1 : -1) : 0 });
         }
       };
-      for (int k = 0; k < spans; ++k)
+      add(3, span(k, -1), 1.0, true);
+      add(3, span(k, 1), 0.0, true);
+      if (!options.Interpolate)
       {
-        if (failing[k])
+        // D_{-1} = D_0 and D_n = D_{n-1}: Y[0] and X[n-1] of an open line do nothing.
+        add(2, closed || k > 0 ? point(k, 0) : -1, 0.0, true);
+        add(1, closed || k + 1 < n - 1 ? point(k, 1) : -1, 0.0, true);
+        add(1, closed || k < n - 1 ? point(k, 0) : -1, 0.0, false);
+        add(2, point(k, 1), 0.0, false);
+      }
+      add(3, span(k, -1), 0.0, false);
+      add(3, span(k, 1), 1.0, false);
+      add(3, span(k, 0), 0.0, false);
+      add(3, span(k, 0), 1.0, false);
+      for (const int j : { point(k, 0), point(k, 1) })
+      {
+        add(0, j, raisedQQRExponent(kappa[j], options.MaxAlpha), false);
+        add(0, j, loweredQQRExponent(kappa[j], options.MinAlpha), false);
+      }
+      return steps;
+    };
+    using Score = std::pair<int, int>; // violations, failing spans
+    const Score worst{ std::numeric_limits<int>::max(), std::numeric_limits<int>::max() };
+    auto scoreOf = [](const ShapeAudit& audit) {
+      return Score{ audit.violations(),
+        static_cast<int>(std::count_if(
+          audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; })) };
+    };
+    double evaluations = 0.0; // span audits
+    // The score after a step (and that curve's audit), worst if a span within
+    // two of the step's index turns irregular.
+    auto tryStep = [&](const Step& step, ShapeAudit& audit) {
+      double& value = (*values[step.Kind])[step.Index];
+      const double before = value;
+      value = step.Value;
+      const auto curve = make(kappa, shape);
+      value = before;
+      evaluations += spans;
+      for (int offset = -2; offset <= 2; ++offset)
+      {
+        const int k = span(step.Index, offset);
+        if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
         {
-          wish(3, spanIndex(k, -1), 1.0);
-          wish(3, spanIndex(k, 1), 0.0);
-          if (!options.Interpolate)
-          {
-            wish(2, closed || k > 0 ? point(k, 0) : -1, 0.0);
-            wish(1, closed || k + 1 < n - 1 ? point(k, 1) : -1, 0.0);
-          }
+          return worst;
         }
       }
+      audit = context.audit(*curve, data);
+      return scoreOf(audit);
+    };
+    auto tighten = [&](const std::vector<char>&) {
+      std::unique_ptr<Curve> current = make(kappa, shape);
+      ShapeAudit audit = context.audit(*current, data);
+      Score score = scoreOf(audit);
+      std::vector<int> order;
+      for (int k = 0; k < spans; ++k)
+      {
+        if (audit.SpanMask[k] != 0)
+        {
+          order.push_back(k);
+        }
+      }
+      const unsigned collinear = 1u << static_cast<int>(ShapeCriterion::Collinearity);
+      std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+        return (audit.SpanMask[a] & collinear) > (audit.SpanMask[b] & collinear);
+      });
       bool changed = false;
-      std::vector<char> spanMoved(spans, 0);
-      for (int v = 1; v < 4; ++v)
+      for (const int k : order)
       {
-        for (size_t j = 0; j < pull[v].size(); ++j)
+        if (audit.SpanMask[k] == 0 || evaluations > EvaluationBudget)
         {
-          const unsigned p = pull[v][j];
-          const double target = p == 1u ? 0.0 : 1.0;
-          double& value = (*values[v])[j];
-          if ((p == 1u || p == 2u) && !frozen[v][j] && value != target)
+          continue; // fixed by an earlier step of this sweep, or out of budget
+        }
+        Score bestScore = worst, bestChordScore = worst;
+        Step best{}, bestChord{};
+        ShapeAudit bestAudit, bestChordAudit;
+        for (const Step& step : stepsOf(k))
+        {
+          ShapeAudit candidate;
+          const Score s = tryStep(step, candidate);
+          if (s < bestScore)
           {
-            value = halfwayTo(value, target);
-            changed = true;
+            bestScore = s;
+            best = step;
+            bestAudit = candidate;
+          }
+          if (step.Chord != 0 && direction[step.Kind][step.Index] != -step.Chord && s <= score &&
+            s < bestChordScore)
+          {
+            bestChordScore = s;
+            bestChord = step;
+            bestChordAudit = candidate;
           }
         }
-      }
-      for (int k = 0; k < spans; ++k)
-      {
-        for (const auto& [v, j] : parametersOf(k))
-        {
-          if (v > 0 && j >= 0 && (*values[v])[j] != previous[v][j])
-          {
-            spanMoved[k] = 1;
-          }
-        }
-      }
-      // The exponents, where a failing span's local parameters are exhausted.
-      // A span depends on the exponents at its two knots only: raise both.
-      for (int k = 0; k < spans; ++k)
-      {
-        if (!failing[k] || spanMoved[k])
+        const bool improves = bestScore < score;
+        if (!improves && bestChordScore == worst)
         {
           continue;
         }
-        for (const int j : { point(k, 0), point(k, 1) })
+        const Step& step = improves ? best : bestChord;
+        (*values[step.Kind])[step.Index] = step.Value;
+        if (step.Chord != 0)
         {
-          if (!frozen[0][j] && kappa[j] < options.MaxAlpha && kappa[j] == previous[0][j])
-          {
-            kappa[j] = raisedQQRExponent(kappa[j], options.MaxAlpha);
-            changed = true;
-          }
+          direction[step.Kind][step.Index] = step.Chord;
         }
+        score = improves ? bestScore : bestChordScore;
+        audit = improves ? bestAudit : bestChordAudit;
+        changed = true;
       }
-      return changed;
+      return changed && evaluations <= EvaluationBudget;
     };
     ShapeAudit audit;
     built.Spline = preserveShape(context, data, build, tighten, options.MaxRounds, &audit);
-    // The last curve competes with the best one seen (tighten only saw those before it).
-    const int lastFailing = static_cast<int>(
-      std::count_if(audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; }));
-    const bool lastRegular = irregularSpans(*last).empty();
-    const std::pair<int, int> lastScore{ audit.violations(), lastFailing };
-    if (!(lastRegular && lastScore < bestScore) &&
-      (kappa != best || shape.X != bestShape.X || shape.Y != bestShape.Y || shape.Z != bestShape.Z))
-    {
-      kappa = best;
-      shape = bestShape;
-      built.Spline = build();
-      audit = context.audit(*built.Spline, data);
-    }
     built.Audit = audit;
     return built;
   };

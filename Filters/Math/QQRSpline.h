@@ -238,6 +238,10 @@ struct QQROptions
   double Y = std::numeric_limits<double>::quiet_NaN();
   double Z = std::numeric_limits<double>::quiet_NaN();
   int MaxRounds = 64;
+  /// Automatic mode: the exponent at a knot may also be lowered, down to this
+  /// (> 3: C2 joins; alpha < 4 keeps the local interpolation of convex data
+  /// convex, see qqrBuilder).
+  double MinAlpha = 3.125;
 };
 
 /// The exponent after one more round of the automatic mode (capped at maxAlpha).
