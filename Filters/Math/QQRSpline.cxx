@@ -701,11 +701,16 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     // corner, where the audit counts any curvature as rounding (its threshold
     // grows as 1 / speed^2) and passes curvatures of 1e50.
     //
-    // 4. Cost: each step tried is a rebuild and an audit of the whole curve;
-    // the search stops after EvaluationBudget of span audits (about 60 sweeps
-    // of a 10-point line, fewer for long lines) or MaxRounds sweeps.
+    // 4. Cost: each step tried is a rebuild and an audit of the whole curve,
+    // about 16 per failing span and sweep. The search stops after
+    // EvaluationBudget span audits (2500 steps tried on a 10-point line, 500
+    // on a 50-point one; measured needs: Akima's control polygon 654 steps,
+    // titanium's interpolation 224), after MaxRounds sweeps, or when a sweep
+    // changes nothing. (Two steps at once on a stuck span were tried too: on
+    // these data sets they found nothing the single steps had not, at ten
+    // times the cost.)
     constexpr double RegularSpeed = 1e-3;
-    constexpr double EvaluationBudget = 2e5;
+    constexpr double EvaluationBudget = 2.5e4;
     std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
     QQRKnotShape shape;
     auto make = [&](const std::vector<double>& exponents, const QQRKnotShape& knotShape) {
@@ -757,6 +762,10 @@ CurveBuilder qqrBuilder(const QQROptions& options)
         {
           steps.push_back({ kind, index, next, chord ? (target > now ? 1 : -1) : 0 });
         }
+        if (kind != 0 && next != target)
+        {
+          steps.push_back({ kind, index, target, 0 }); // the whole way at once
+        }
       };
       add(3, span(k, -1), 1.0, true);
       add(3, span(k, 1), 0.0, true);
@@ -787,25 +796,38 @@ CurveBuilder qqrBuilder(const QQROptions& options)
           audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; })) };
     };
     double evaluations = 0.0; // span audits
-    // The score after a step (and that curve's audit), worst if a span within
-    // two of the step's index turns irregular.
-    auto tryStep = [&](const Step& step, ShapeAudit& audit) {
-      double& value = (*values[step.Kind])[step.Index];
-      const double before = value;
-      value = step.Value;
-      const auto curve = make(kappa, shape);
-      value = before;
-      evaluations += spans;
-      for (int offset = -2; offset <= 2; ++offset)
+    // The score after some steps (and that curve's audit), worst if a span
+    // within two of a step's index turns irregular.
+    auto trySteps = [&](const std::vector<Step>& steps, ShapeAudit& audit) {
+      std::vector<double> before;
+      for (const Step& step : steps)
       {
-        const int k = span(step.Index, offset);
-        if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
+        double& value = (*values[step.Kind])[step.Index];
+        before.push_back(value);
+        value = step.Value;
+      }
+      const auto curve = make(kappa, shape);
+      for (size_t q = steps.size(); q-- > 0;)
+      {
+        (*values[steps[q].Kind])[steps[q].Index] = before[q];
+      }
+      evaluations += spans;
+      for (const Step& step : steps)
+      {
+        for (int offset = -2; offset <= 2; ++offset)
         {
-          return worst;
+          const int k = span(step.Index, offset);
+          if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
+          {
+            return worst;
+          }
         }
       }
       audit = context.audit(*curve, data);
       return scoreOf(audit);
+    };
+    auto tryStep = [&](const Step& step, ShapeAudit& audit) {
+      return trySteps({ step }, audit);
     };
     auto tighten = [&](const std::vector<char>&) {
       std::unique_ptr<Curve> current = make(kappa, shape);

@@ -228,16 +228,18 @@ private:
 struct QQROptions
 {
   bool Interpolate = true; ///< local interpolation (3.18)-(3.21); false: the data are the control polygon
-  /// Raise alpha = beta at the knots of spans where the shape audit fails,
-  /// from Alpha, until none fails or MaxAlpha is reached.
+  /// Where the shape audit fails, step the local shape parameters per point
+  /// (from X, Y, Z below) and alpha = beta per knot (from the larger of Alpha
+  /// and Beta, between MinAlpha and MaxAlpha), see qqrBuilder.
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
-  /// interpolation takes x and y from (3.18) and ignores X and Y.
+  /// interpolation takes x and y from (3.18) and ignores X and Y. Automatic:
+  /// the starting values, changed per point where the audit fails.
   double X = std::numeric_limits<double>::quiet_NaN();
   double Y = std::numeric_limits<double>::quiet_NaN();
   double Z = std::numeric_limits<double>::quiet_NaN();
-  int MaxRounds = 64;
+  int MaxRounds = 64; ///< automatic: sweeps over the failing spans at most
   /// Automatic mode: the exponent at a knot may also be lowered, down to this
   /// (> 3: C2 joins; alpha < 4 keeps the local interpolation of convex data
   /// convex, see qqrBuilder).
@@ -251,10 +253,20 @@ double raisedQQRExponent(double alpha, double maxAlpha);
  * Builder of qqr B-spline-like curves for fitPolyline: interpolation or the
  * data as control polygon (its shape reference then being the data polygon),
  * fixed exponents or automatic. Per-point values (PointValues) are ignored.
- * Automatic: alpha = beta per knot, raised (raisedQQRExponent) at both knots
- * of every failing span through preserveShape, except where a raise would make
- * a span irregular (speedRatio below 1e-3: undone, the knots frozen); the
- * curve returned is the regular one with the fewest failing spans seen.
+ * Automatic: alpha = beta per knot and the local shape parameters per point
+ * (QQRKnotShape: z; x and y too for the control polygon). Through
+ * preserveShape, each round sweeps the failing spans (collinearity first) and
+ * takes per span the step of its parameters that lowers (violations, failing
+ * spans) most: Z[k-1], Z[k+1] half way to 1, 0 (and Y[k], X[k+1] half way to
+ * 0), which put span k on its chord, the opposite steps, Z[k] either way, or
+ * the exponent at one of its knots raised (raisedQQRExponent, up to MaxAlpha)
+ * or lowered towards 3 (down to MinAlpha). Where no step lowers the score, a
+ * chord-following step that keeps it is taken. Steps that make a span slower
+ * than 1e-3 of its Bezier polygon are refused (speedRatio), so the curve stays
+ * regular, and C2. The score never rises: the last curve is the best seen.
+ * Measured (tests): violations fixed -> automatic, interpolation: Akima 3 -> 0,
+ * RPN 15A 3 -> 1, titanium 15 -> 1; control polygon: Akima 1 -> 0, the others
+ * 0 already.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines
