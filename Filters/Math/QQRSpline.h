@@ -257,15 +257,17 @@ double raisedQQRExponent(double alpha, double maxAlpha);
  * (QQRKnotShape: z; x and y too for the control polygon). Through
  * preserveShape, each round sweeps the failing spans (collinearity first) and
  * takes per span the step of its parameters that lowers (violations, failing
- * spans) most: Z[k-1], Z[k+1] half way to 1, 0 (and Y[k], X[k+1] half way to
+ * spans; in a second search, run when the first leaves violations, also how
+ * far the failing spans are from passing) most: Z[k-1], Z[k+1] half way to 1, 0 (and Y[k], X[k+1] half way to
  * 0), which put span k on its chord, the opposite steps, Z[k] either way, or
  * the exponent at one of its knots raised (raisedQQRExponent, up to MaxAlpha)
  * or lowered towards 3 (down to MinAlpha). Where no step lowers the score, a
  * chord-following step that keeps it is taken. Steps that make a span slower
  * than 1e-3 of its Bezier polygon are refused (speedRatio), so the curve stays
- * regular, and C2. The score never rises: the last curve is the best seen.
+ * regular, and C2. The score never rises: a search's last curve is its best;
+ * the better of the two searches is returned.
  * Measured (tests): violations fixed -> automatic, interpolation: Akima 3 -> 0,
- * RPN 15A 3 -> 1, titanium 15 -> 1; control polygon: Akima 1 -> 0, the others
+ * RPN 15A 3 -> 1, titanium 15 -> 0; control polygon: Akima 1 -> 0, the others
  * 0 already.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
