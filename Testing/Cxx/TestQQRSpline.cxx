@@ -1108,14 +1108,17 @@ TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
   // (before the local parameters moved, the automatic mode stayed at the
   // fixed counts: raising alpha never helped).
   //
-  // Why not zero for the interpolation of RPN 15A: its span 4 (D_4 to D_5)
-  // must turn right, but the data turn by only 0.4 degrees at D_4 and by 30
-  // at D_5. The tangent (3.20) at D_5 mixes the two chords with weights from
-  // Z[4], Z[5]; span 4 stays convex only with Z[5] <= 0.05 (measured over a
-  // grid of Z[3], Z[4], Z[5] and exponents 3.125..8 at D_4, D_5), which puts
-  // the middle point of span 5 on D_5 and bends span 5 or 6 the wrong way.
-  // A coordinate descent over all Z and exponents in {3.125, 3.5, 4, 6} from
-  // 100 random starts found no regular curve below 1 violation either.
+  // Why not zero for the interpolation of RPN 15A: spans 4, 5, 6 (D_4 to D_7)
+  // must all turn right, but the data turn by 0.3 degrees at D_4, 29 at D_5
+  // and 1.5 at D_6: a nearly straight approach into a sharp bend that
+  // flattens out. The tangent (3.20) and second derivative (3.21) at a knot
+  // are fixed by the z on its two sides, and no choice keeps the three spans
+  // between those knots convex together: measured over a grid of
+  // Z[3..6] in {0, 0.1, ..., 1} with exponents {3.125, 4, 6, 10} at D_4, D_5,
+  // D_6 (940,000 curves), the regular curves have at best one violation,
+  // convexity inside span 4, 5 or 6 (whichever the parameters sacrifice),
+  // never none; a coordinate descent over all Z and exponents from 100 random
+  // starts found none below one either.
   struct Expected
   {
     int Fixed, Automatic;
