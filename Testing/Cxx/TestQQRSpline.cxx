@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <limits>
 #include <random>
+#include <tuple>
 
 using namespace shapesplines;
 using namespace shapesplines::test;
@@ -878,6 +879,140 @@ TEST(QQRSpline, PerKnotExponentsKeepC2ForTheControlPolygonCurveOpenAndClosed)
   }
 }
 
+TEST(QQRSpline, PerPointLocalParametersKeepC2AndTheInterpolation)
+{
+  // QQRKnotShape: a z (and for the control polygon an x and a y) per point,
+  // anywhere in [0, 1] (x, y in [-0.2, 0.5]), with an exponent per knot: the
+  // joins stay C2, the interpolation still passes through the data with the
+  // tangent (3.20) and second derivative (3.21) of the z on either side.
+  std::mt19937 random(144);
+  std::uniform_real_distribution<double> exponent(3.2, 40.0), unit(0.0, 1.0), local(-0.2, 0.5);
+  for (const bool interpolate : { true, false })
+  {
+    for (const bool closed : { false, true })
+    {
+      const std::vector<Vec3> points = RandomPoints(12, random);
+      const int n = static_cast<int>(points.size());
+      const int spans = closed ? n : n - 1;
+      const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+      std::vector<double> kappa(n);
+      QQRKnotShape shape;
+      for (int j = 0; j < n; ++j)
+      {
+        kappa[j] = exponent(random);
+        shape.Z.push_back(j % 4 == 0 ? std::round(unit(random)) : unit(random)); // some exactly 0 or 1
+        shape.X.push_back(local(random));
+        shape.Y.push_back(local(random));
+      }
+      shape.Z[3] = std::numeric_limits<double>::quiet_NaN(); // the paper's there
+      // Z[4] = 1 with Z[5] = 0 would stop the interpolation at point 5.
+      shape.Z[4] = 0.9;
+      const QQRSpline curve = interpolate
+        ? QQRSpline::interpolate(points, t, closed, kappa, QQRLocalShape{}, shape)
+        : QQRSpline::approximate(points, t, closed, kappa, QQRLocalShape{}, shape);
+      const QQRKnotShape& used = curve.knotShape();
+      for (int j = 0; j < n; ++j)
+      {
+        if (j != 3)
+        {
+          EXPECT_EQ(used.Z[j], shape.Z[j]) << j;
+        }
+        if (!interpolate)
+        {
+          EXPECT_EQ(used.X[j], shape.X[j]) << j;
+          EXPECT_EQ(used.Y[j], shape.Y[j]) << j;
+        }
+      }
+      auto dh = [&](int j) {
+        j = closed ? (j % spans + spans) % spans : j;
+        return t[j + 1] - t[j];
+      };
+      EXPECT_NEAR(used.Z[3], (2 * dh(2) + dh(3)) / (2 * (dh(2) + dh(3) + dh(4))), 1e-15);
+      double c2 = 0.0, thirdJump = 0.0, position = 0.0, tangent = 0.0, second = 0.0;
+      for (int k = 0; k < spans; ++k)
+      {
+        const Derivatives right = curve.evaluateOnSpan(k, t[k], 3);
+        if (interpolate)
+        {
+          position = std::max(position, (right[0] - points[k]).norm());
+          if (closed || (k >= 2 && k + 2 <= spans))
+          {
+            const Vec3& before = points[(k - 1 + n) % n];
+            const Vec3& after = points[(k + 1) % n];
+            const double a = kappa[k], h0 = dh(k - 1), h1 = dh(k);
+            const double z0 = used.Z[(k - 1 + n) % n], z1 = used.Z[k];
+            const Vec3 backward = (points[k] - before) / h0, forward = (after - points[k]) / h1;
+            const Vec3 expectedTangent = a / (2 * (h0 + h1)) * (h1 * (1 - z0) * backward + h0 * z1 * forward);
+            const Vec3 expectedSecond = (a * a - a) / (h0 + h1) * (z1 * forward - (1 - z0) * backward);
+            tangent = std::max(tangent, (right[1] - expectedTangent).norm() / expectedTangent.norm());
+            second = std::max(second, (right[2] - expectedSecond).norm() / expectedSecond.norm());
+          }
+        }
+        if (k > 0 || closed)
+        {
+          const int previous = (k - 1 + spans) % spans;
+          const Derivatives left = curve.evaluateOnSpan(previous, t[previous + 1], 3);
+          for (int m = 0; m <= 2; ++m)
+          {
+            c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(right[m].norm(), 1e-300));
+          }
+          thirdJump = std::max(thirdJump, (left[3] - right[3]).norm() / right[3].norm());
+        }
+      }
+      std::printf("%s, %s, z (x, y) per point: C2 jumps %.1e, third %.2f; data %.1e, (3.20) %.1e, "
+                  "(3.21) %.1e\n",
+        interpolate ? "interpolation" : "control polygon", closed ? "closed" : "open", c2, thirdJump,
+        position, tangent, second);
+      EXPECT_LT(c2, 1e-9);
+      EXPECT_GT(thirdJump, 1e-3);
+      EXPECT_LT(position, 1e-12);
+      EXPECT_LT(tangent, 1e-11);
+      EXPECT_LT(second, 1e-10);
+    }
+  }
+}
+
+TEST(QQRSpline, LocalParametersStraightenAkimasRun)
+{
+  // Akima's data: a straight run D_0..D_5, then D_6 off the line. The last
+  // span of the run, 4, is straight when its Bezier points are on the line:
+  // S_5 (from X[5]) and the middle point of span 5 (Z[5]) must be.
+  const std::vector<Vec3> points = akima();
+  auto fit = [&](bool interpolate, const QQRKnotShape& shape, double alpha) {
+    CurveBuilder builder = [&](const FitContext& context) {
+      BuiltCurve built;
+      const std::vector<double> kappa(context.Data.Points.size(), alpha);
+      built.Spline = std::make_unique<QQRSpline>(interpolate
+          ? QQRSpline::interpolate(context.Data.Points, context.Knots, false, kappa, {}, shape)
+          : QQRSpline::approximate(context.Data.Points, context.Knots, false, kappa, {}, shape));
+      if (!interpolate)
+      {
+        built.ShapeReference = context.Data;
+      }
+      return built;
+    };
+    return fitPolyline(points, FitOptions{}, builder);
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> free(points.size(), nan);
+  auto with = [&](int j, double value) {
+    std::vector<double> v = free;
+    v[j] = value;
+    return v;
+  };
+  const int collinearity = int(ShapeCriterion::Collinearity);
+  for (const double alpha : { 3.5, 4.0, 13.5 })
+  {
+    // Control polygon: the suggested x_i = z_i = 0 next to the run (X[5] =
+    // Z[5] = 0) straightens it; either alone does not.
+    EXPECT_EQ(fit(false, QQRKnotShape{ with(5, 0.0), {}, with(5, 0.0) }, alpha).Audit.Failures[collinearity], 0);
+    EXPECT_GE(fit(false, QQRKnotShape{ with(5, 0.0), {}, {} }, alpha).Audit.Failures[collinearity], 1);
+    EXPECT_GE(fit(false, QQRKnotShape{ {}, {}, with(5, 0.0) }, alpha).Audit.Failures[collinearity], 1);
+    // Interpolation: (3.18) makes X[5] ~ -Z[5], so Z[5] = 0 alone does it.
+    EXPECT_EQ(fit(true, QQRKnotShape{ {}, {}, with(5, 0.0) }, alpha).Audit.Failures[collinearity], 0);
+  }
+}
+
 TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
 {
   // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)
@@ -964,31 +1099,100 @@ TEST(QQRSpline, RaisingAlphaBendsConvexDataTheWrongWayInTheMiddleOfEachSpan)
 
 TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
 {
-  const std::vector<std::pair<const char*, std::vector<Vec3>>> sets = { { "Akima", akima() },
-    { "RPN 15A", rpn15a() }, { "titanium", titanium() } };
-  for (const auto& [name, points] : sets)
+  // The automatic mode steps the local parameters per point (QQRKnotShape)
+  // and the exponents per knot (see qqrBuilder). Measured violations, fixed
+  // alpha = beta = 4 with the paper's x, y, z -> automatic:
+  //   Akima        interpolation 3 -> 0, control polygon 1 -> 0
+  //   RPN 15A      interpolation 3 -> 1, control polygon 0 -> 0
+  //   titanium     interpolation 15 -> 0, control polygon 0 -> 0
+  // (before the local parameters moved, the automatic mode stayed at the
+  // fixed counts: raising alpha never helped).
+  //
+  // Why not zero for the interpolation of RPN 15A: spans 4, 5, 6 (D_4 to D_7)
+  // must all turn right, but the data turn by 0.3 degrees at D_4, 29 at D_5
+  // and 1.5 at D_6: a nearly straight approach into a sharp bend that
+  // flattens out. The tangent (3.20) and second derivative (3.21) at a knot
+  // are fixed by the z on its two sides, and no choice keeps the three spans
+  // between those knots convex together: measured over a grid of
+  // Z[3..6] in {0, 0.1, ..., 1} with exponents {3.125, 4, 6, 10} at D_4, D_5,
+  // D_6 (940,000 curves), the regular curves have at best one violation,
+  // convexity inside span 4, 5 or 6 (whichever the parameters sacrifice),
+  // never none; a coordinate descent over all Z and exponents from 100 random
+  // starts found none below one either.
+  struct Expected
+  {
+    int Fixed, Automatic;
+  };
+  const std::vector<std::tuple<const char*, std::vector<Vec3>, Expected, Expected>> sets = {
+    { "Akima", akima(), { 3, 0 }, { 1, 0 } }, { "RPN 15A", rpn15a(), { 3, 1 }, { 0, 0 } },
+    { "titanium", titanium(), { 15, 0 }, { 0, 0 } }
+  };
+  for (const auto& [name, points, interpolation, controlPolygon] : sets)
   {
     for (const bool interpolate : { true, false })
     {
+      const Expected expected = interpolate ? interpolation : controlPolygon;
       const FittedPolyline fixed = Fit(points, interpolate, false);
       const FittedPolyline automatic = Fit(points, interpolate, true);
-      const auto alphas = automatic.Spline->spanParameters().at(0).Values;
-      std::printf("%s, %s: alpha = beta = 4 fixed %d violations, automatic %d (largest alpha %g, "
-                  "%ld of %zu spans raised; largest curvature %.3g, fixed %.3g)\n",
-        name, interpolate ? "interpolation" : "control polygon", fixed.Audit.violations(),
-        automatic.Audit.violations(), LargestAlpha(automatic),
-        std::count_if(alphas.begin(), alphas.end(), [](double a) { return a > 4.0; }), alphas.size(),
-        LargestCurvature(automatic), LargestCurvature(fixed));
-      EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << name;
-      if (interpolate)
-      {
-        EXPECT_GT(fixed.Audit.violations(), 0) << name;
-      }
-      // The automatic curve stays regular: no span slower than 1e-3 of its Bezier polygon.
       const auto& spline = dynamic_cast<const QQRSpline&>(*automatic.Spline);
+      const auto& paper = dynamic_cast<const QQRSpline&>(*fixed.Spline).knotShape();
+      const QQRKnotShape& chosen = spline.knotShape();
+      std::printf("%s, %s: alpha = beta = 4 fixed %d violations, automatic %d (largest curvature "
+                  "%.3g, fixed %.3g)\n  changed from the paper's:",
+        name, interpolate ? "interpolation" : "control polygon", fixed.Audit.violations(),
+        automatic.Audit.violations(), LargestCurvature(automatic), LargestCurvature(fixed));
+      for (int j = 0; j < static_cast<int>(chosen.Z.size()); ++j)
+      {
+        if (chosen.Z[j] != paper.Z[j])
+        {
+          std::printf(" Z[%d] %.3g->%.3g", j, paper.Z[j], chosen.Z[j]);
+        }
+        if (!interpolate && chosen.X[j] != paper.X[j])
+        {
+          std::printf(" X[%d] %.3g->%.3g", j, paper.X[j], chosen.X[j]);
+        }
+        if (!interpolate && chosen.Y[j] != paper.Y[j])
+        {
+          std::printf(" Y[%d] %.3g->%.3g", j, paper.Y[j], chosen.Y[j]);
+        }
+      }
+      for (int k = 0; k < spline.numberOfSpans(); ++k)
+      {
+        for (const int side : { 0, 1 })
+        {
+          if (spline.exponents(k)[side] != 4.0 && (side == 0 || k + 1 == spline.numberOfSpans()))
+          {
+            std::printf(" alpha[%d] %g", k + side, spline.exponents(k)[side]);
+          }
+        }
+      }
+      std::printf("\n");
+      EXPECT_EQ(fixed.Audit.violations(), expected.Fixed) << name;
+      EXPECT_EQ(automatic.Audit.violations(), expected.Automatic) << name;
+      EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << name;
+      // The automatic curve stays regular: no span slower than 1e-3 of its Bezier polygon.
       for (int k = 0; k < spline.numberOfSpans(); ++k)
       {
         EXPECT_GE(spline.speedRatio(k), 1e-3) << name << " span " << k;
+      }
+      // And C2 (alpha = beta at every knot, any local parameters); the jumps
+      // relative to the largest derivative of that order at the knots (a
+      // straight run has second derivatives of rounding size).
+      std::array<double, 3> scale{}, jump{};
+      for (int k = 1; k < spline.numberOfSpans(); ++k)
+      {
+        const double u = spline.knots()[k];
+        const Derivatives left = spline.evaluateOnSpan(k - 1, u, 2);
+        const Derivatives right = spline.evaluateOnSpan(k, u, 2);
+        for (int m = 0; m <= 2; ++m)
+        {
+          scale[m] = std::max(scale[m], right[m].norm());
+          jump[m] = std::max(jump[m], (left[m] - right[m]).norm());
+        }
+      }
+      for (int m = 0; m <= 2; ++m)
+      {
+        EXPECT_LT(jump[m], 1e-10 * scale[m]) << name << " derivative " << m;
       }
     }
   }
@@ -1091,4 +1295,17 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
   options.Alpha = 4.0;
   options.Beta = -1.0;
   EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
+  options.Beta = 4.0;
+  options.MinAlpha = 3.0; // C2 needs > 3
+  EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
+  options.Automatic = false; // MinAlpha not used
+  EXPECT_NO_THROW(qqrBuilder(options));
+  // Local shape parameters per point: one per point, finite or NaN.
+  const std::vector<double> kappa(4, 4.0);
+  const QQRLocalShape paper;
+  EXPECT_NO_THROW(QQRSpline::interpolate(points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { NAN, 0.2, 1, 0 } }));
+  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { 0.5, 0.5, 0.5 } }),
+    std::invalid_argument);
+  EXPECT_THROW(QQRSpline::approximate(points, knots, false, kappa, paper, QQRKnotShape{ { 0, 0, INFINITY, 0 }, {}, {} }),
+    std::invalid_argument);
 }
