@@ -29,6 +29,11 @@ int vtkQQRSplineFilter::RequestData(
     vtkWarningMacro("Alpha and Beta at or below 3: the qqr basis is not positive there and the "
                     "joins are not C2 (the paper's Theorems 1 and 8 need more than 3).");
   }
+  else if (std::min(this->Alpha, this->Beta) < 4.0)
+  {
+    vtkWarningMacro("Alpha or Beta below 4: the third derivative, and so the torsion, is "
+                    "unbounded at the knots.");
+  }
   if (this->Automatic && this->MaxAlpha < std::max(this->Alpha, this->Beta))
   {
     vtkWarningMacro("MaxAlpha " << this->MaxAlpha << " is below Alpha/Beta: the automatic mode "

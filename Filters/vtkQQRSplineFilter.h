@@ -20,10 +20,10 @@
  * takes the points as the control polygon (the classical cubic B-spline
  * curve at the defaults; shape violations are counted against the polygon).
  *
- * With Automatic on (default) the shape parameters are raised only at the
- * knots of spans where the shape audit (paper 001, Definition 1) fails;
- * raising alpha alone cannot straighten every run (see the README), so some
- * lines keep violations. Continuity C2_FC (approximation) sets x = y = 0 and
+ * With Automatic on (default) the local parameters and exponents of the
+ * spans where the shape audit (paper 001, Definition 1) fails are searched,
+ * span by span, for steps that lower the violations; some lines keep a few
+ * (see the README). Continuity C2_FC (approximation) sets x = y = 0 and
  * alpha = beta >= FrenetOrder + 3: C2 and Frenet frame continuous to order
  * 2 FrenetOrder + 3 (Theorem 13).
  *
@@ -88,7 +88,8 @@ public:
   ///@{
   /**
    * The exponents of the qqr basis (default 4 and 4, at least 2; above 3 for
-   * a positive basis and C2 joins). Automatic mode starts from the larger.
+   * a positive basis and C2 joins, at least 4 for a torsion bounded at the
+   * knots). Automatic mode starts from the larger.
    */
   vtkSetClampMacro(Alpha, double, 2.0, 200.0);
   vtkGetMacro(Alpha, double);

@@ -718,7 +718,7 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     // changes nothing. (Two steps at once on a stuck span were tried too: on
     // these data sets they found nothing the single steps had not, at ten
     // times the cost.)
-    constexpr double RegularSpeed = 1e-3;
+    constexpr double RegularSpeed = 0.02;
     constexpr double EvaluationBudget = 2.5e4;
     std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
     QQRKnotShape shape;

@@ -242,8 +242,10 @@ struct QQROptions
   int MaxRounds = 64; ///< automatic: sweeps over the failing spans at most
   /// Automatic mode: the exponent at a knot may also be lowered, down to this
   /// (> 3: C2 joins; alpha < 4 keeps the local interpolation of convex data
-  /// convex, see qqrBuilder).
-  double MinAlpha = 3.125;
+  /// convex, see qqrBuilder). Default 4: below it A1 = alpha t (1-t)^(alpha-1)
+  /// has an unbounded third derivative at the knot, and so has the curve's
+  /// torsion (measured: saturating at the largest double on a conical helix).
+  double MinAlpha = 4.0;
 };
 
 /// The exponent after one more round of the automatic mode (capped at maxAlpha).

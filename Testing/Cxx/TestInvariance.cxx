@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include <cstdio>
 #include <string>
 
 using namespace shapesplines;
@@ -23,7 +24,22 @@ struct Family
   std::string Name;
   CurveBuilder Build;
   bool Closed;
+  /// False for the qqr automatic search, which visits the failing spans in
+  /// order and keeps the first best step: a reversed line can end with other
+  /// local parameters and violation counts (see the README).
+  bool ReversalInvariant = true;
 };
+
+/// The fixed mode the qqr automatic one starts from (alpha = beta = 4).
+CurveBuilder qqr(bool interpolate, double alpha, bool automatic = false)
+{
+  QQROptions options;
+  options.Interpolate = interpolate;
+  options.Automatic = automatic;
+  options.Alpha = alpha;
+  options.Beta = alpha;
+  return qqrBuilder(options);
+}
 
 CurveBuilder generalizedCubic(SpaceKind kind, double tension)
 {
@@ -55,16 +71,6 @@ CurveBuilder variableDegree(VariableDegreeEnds ends, double degree)
   return variableDegreeBuilder(options);
 }
 
-CurveBuilder qqr(bool interpolate, double alpha)
-{
-  QQROptions options;
-  options.Interpolate = interpolate;
-  options.Automatic = false;
-  options.Alpha = alpha;
-  options.Beta = alpha;
-  return qqrBuilder(options);
-}
-
 std::vector<Family> Families()
 {
   return { { "CubicNotAKnot", cubicBuilder(CubicEndCondition::NotAKnot), false },
@@ -82,8 +88,9 @@ std::vector<Family> Families()
     { "VariableDegreeAutomatic", variableDegreeBuilder({}), false },
     { "VariableDegreeClosed", variableDegreeBuilder({}), true },
     { "VariableDegreeClampedFixed", variableDegree(VariableDegreeEnds::Clamped, 9.0), false },
-    { "QQRInterpolationAutomatic", qqrBuilder({}), false },
-    { "QQRInterpolationClosed", qqrBuilder({}), true },
+    { "QQRInterpolationAutomatic", qqrBuilder({}), false, false },
+    { "QQRInterpolationClosed", qqrBuilder({}), true, false },
+    { "QQRInterpolationFixed", qqr(true, 5.0), false },
     { "QQRControlPolygonFixed", qqr(false, 6.0), false } };
 }
 
@@ -154,9 +161,11 @@ void expectTransformed(const Family& family, Map map, double scale, double hande
   const Fitted b = fit(family, moved);
   ASSERT_EQ(a.Sampled.Samples.size(), b.Sampled.Samples.size());
   const double extent = size(moved);
-  // Curvature that vanishes (natural ends) is compared with rounding, 1e-12 /
-  // size: ends made natural through a solve keep its rounding (condition x eps).
-  const double zeroCurvature = 1e-12 / size(data);
+  // Curvature that vanishes is compared with rounding, 1e-9 / size: ends made
+  // natural through a solve keep its rounding (condition x eps), and straight
+  // pieces a shape-preserving curve puts on collinear data carry curvature of
+  // rounding size (up to 3e-10 / size measured on the qqr curves).
+  const double zeroCurvature = 1e-9 / size(data);
   for (int k = 0; k < a.Sampled.Samples.size(); ++k)
   {
     const Vec3 expected = map(a.Sampled.Samples.Values[k][0]);
@@ -205,6 +214,18 @@ TEST_P(Invariance, ReversalTracesTheSameCurveBackwards)
   const auto& f = forward.Sampled;
   const auto& b = backward.Sampled;
   ASSERT_EQ(f.Samples.size(), b.Samples.size());
+  if (!family.ReversalInvariant)
+  {
+    // What does hold: either direction does no worse than the fixed mode it starts from.
+    Family fixed = family;
+    fixed.Build = qqr(true, 4.0);
+    const int start = fit(fixed, data).Fit.Audit.violations();
+    std::printf("%s: fixed %d violations, automatic forward %d, backward %d\n", family.Name.c_str(),
+      start, forward.Fit.Audit.violations(), backward.Fit.Audit.violations());
+    EXPECT_LE(forward.Fit.Audit.violations(), start);
+    EXPECT_LE(backward.Fit.Audit.violations(), start);
+    return;
+  }
   const int n = f.Samples.size();
   const double extent = size(data);
   for (int k = 0; k < n; ++k)
@@ -213,7 +234,7 @@ TEST_P(Invariance, ReversalTracesTheSameCurveBackwards)
     const int r = family.Closed ? ((n - 7 - k) % n + n) % n : n - 1 - k;
     EXPECT_LT((b.Samples.Values[r][0] - f.Samples.Values[k][0]).norm(), 1e-12 * extent) << k;
     EXPECT_NEAR(b.Frames[r].Curvature, f.Frames[k].Curvature,
-      1e-9 * f.Frames[k].Curvature + 1e-12 / extent)
+      1e-9 * f.Frames[k].Curvature + 1e-9 / extent)
       << k;
     // At a knot the torsion is one-sided (the third derivative of a C2 curve
     // jumps there): the sample takes the span after it, which reversal makes the

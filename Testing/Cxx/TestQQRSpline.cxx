@@ -1125,7 +1125,9 @@ TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
   };
   const std::vector<std::tuple<const char*, std::vector<Vec3>, Expected, Expected>> sets = {
     { "Akima", akima(), { 3, 0 }, { 1, 0 } }, { "RPN 15A", rpn15a(), { 3, 1 }, { 0, 0 } },
-    { "titanium", titanium(), { 15, 0 }, { 0, 0 } }
+    // titanium's interpolation reaches 0 only with exponents below 4 (3.5 at
+    // six knots), where the torsion is unbounded at the knots: MinAlpha is 4.
+    { "titanium", titanium(), { 15, 1 }, { 0, 0 } }
   };
   for (const auto& [name, points, interpolation, controlPolygon] : sets)
   {
