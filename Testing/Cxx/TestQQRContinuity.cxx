@@ -90,3 +90,40 @@ TEST(QQRTheorem13, ZeroLocalParametersGiveFrenetFrameContinuityWhereThePapersDoN
   EXPECT_LT(c2.Curvature, 1e-9); // C2
   EXPECT_GT(c2.Torsion, 1e-2);   // but not FC3
 }
+
+TEST(QQRTheorem13, ConvexControlPolygonsGiveConvexCurves)
+{
+  // (3.17): with x = y = 0 and alpha = beta, Q'' is a non-negative combination
+  // of the polygon's turning edges, so a convex polygon gives a curve whose
+  // signed curvature keeps the polygon's sign. Convex data: an uneven parabola.
+  std::vector<Vec3> points;
+  std::vector<double> knots;
+  for (const double x : { -3.0, -2.2, -1.0, -0.7, 0.1, 0.4, 1.5, 1.7, 2.8, 3.0 })
+  {
+    points.emplace_back(x, 0.3 * x * x, 0.0);
+    knots.push_back(knots.empty() ? 0.0 : knots.back() + (points.back() - points[points.size() - 2]).norm());
+  }
+  for (const double alpha : { 4.0, 7.0, 20.0 })
+  {
+    for (const double z : { 0.2, 0.5, 0.8 })
+    {
+      const auto curve = QQRSpline::approximate(points, knots, false, alpha, alpha, { 0.0, 0.0, z });
+      // The doubled end points make the curvature vanish at the ends: strictly
+      // positive inside, zero up to rounding on the end spans.
+      double inside = 1e300, ends = 1e300;
+      for (int j = 0; j < curve.numberOfSpans(); ++j)
+      {
+        const bool end = j == 0 || j == curve.numberOfSpans() - 1;
+        for (int k = 0; k <= 32; ++k)
+        {
+          const double u = knots[j] + (knots[j + 1] - knots[j]) * k / 32.0;
+          const Derivatives d = curve.evaluateOnSpan(j, u, 2);
+          double& smallest = end ? ends : inside;
+          smallest = std::min(smallest, d[1].cross(d[2]).z() / std::pow(d[1].norm(), 3));
+        }
+      }
+      EXPECT_GT(inside, 0.0) << "alpha " << alpha << " z " << z;
+      EXPECT_GT(ends, -1e-10) << "alpha " << alpha << " z " << z;
+    }
+  }
+}
