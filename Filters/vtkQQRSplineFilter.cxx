@@ -5,11 +5,21 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
+#include <string>
 
 vtkStandardNewMacro(vtkQQRSplineFilter);
 
 vtkQQRSplineFilter::vtkQQRSplineFilter() = default;
-vtkQQRSplineFilter::~vtkQQRSplineFilter() = default;
+vtkQQRSplineFilter::~vtkQQRSplineFilter()
+{
+  this->SetZArrayName(nullptr);
+}
+
+const char* vtkQQRSplineFilter::GetPointValuesArrayName()
+{
+  const char* name = this->ZArrayName;
+  return name && std::string(name) != "None" ? name : nullptr;
+}
 
 const char* vtkQQRSplineFilter::GetModeAsString()
 {
@@ -85,4 +95,5 @@ void vtkQQRSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Z: " << this->Z << "\n";
   os << indent << "Continuity: " << (this->Continuity == C2_FC ? "C2_FC" : "C2") << "\n";
   os << indent << "FrenetOrder: " << this->FrenetOrder << "\n";
+  os << indent << "ZArrayName: " << (this->ZArrayName ? this->ZArrayName : "(none)") << "\n";
 }

@@ -123,6 +123,17 @@ public:
 
   ///@{
   /**
+   * The name of an input point array giving the local bias z per point
+   * (empty or "None", the default: none), used instead of the Local
+   * Parameters' z (fixed) or as the automatic search's start; values
+   * outside [0, 1] or not finite fall back to them.
+   */
+  vtkSetStringMacro(ZArrayName);
+  vtkGetStringMacro(ZArrayName);
+  ///@}
+
+  ///@{
+  /**
    * C2 (default) or C2_FC: in APPROXIMATE mode x = y = 0 and
    * alpha = beta >= FrenetOrder + 3, so the curve is C2 and Frenet frame
    * continuous of order 2 FrenetOrder + 3 (Theorem 13). FrenetOrder is l >= 1.
@@ -142,6 +153,7 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  const char* GetPointValuesArrayName() override;
 
   int Mode = INTERPOLATE;
   bool Automatic = true;
@@ -154,6 +166,7 @@ protected:
   double Z = 0.5;
   int Continuity = C2;
   int FrenetOrder = 1;
+  char* ZArrayName = nullptr;
 
 private:
   vtkQQRSplineFilter(const vtkQQRSplineFilter&) = delete;

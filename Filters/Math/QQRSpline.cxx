@@ -358,10 +358,10 @@ std::vector<std::array<double, 2>> knotExponentsToSpans(
 } // namespace
 
 QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, double alpha, double beta, const Local& local)
+  bool closed, double alpha, double beta, const Local& local, const QQRKnotShape& knotShape)
 {
   const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, {}, false);
+  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, knotShape, false);
 }
 
 QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
@@ -380,10 +380,10 @@ QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vec
 }
 
 QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, double alpha, double beta, const Local& local)
+  bool closed, double alpha, double beta, const Local& local, const QQRKnotShape& knotShape)
 {
   const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, {}, true);
+  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, knotShape, true);
 }
 
 QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
@@ -644,6 +644,12 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     const int n = static_cast<int>(data.Points.size());
     const int spans = data.numberOfSpans();
     const QQRSpline::Local local{ options.X, options.Y, options.Z };
+    // The user's z per point, where given in [0, 1] (NaN elsewhere: Z's value).
+    QQRKnotShape given;
+    for (const double z : context.PointValues)
+    {
+      given.Z.push_back(z >= 0.0 && z <= 1.0 ? z : std::numeric_limits<double>::quiet_NaN());
+    }
     BuiltCurve built;
     if (!options.Interpolate)
     {
@@ -652,8 +658,10 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     if (!options.Automatic)
     {
       built.Spline = std::make_unique<QQRSpline>(options.Interpolate
-          ? QQRSpline::interpolate(data.Points, context.Knots, closed, options.Alpha, options.Beta, local)
-          : QQRSpline::approximate(data.Points, context.Knots, closed, options.Alpha, options.Beta, local));
+          ? QQRSpline::interpolate(
+              data.Points, context.Knots, closed, options.Alpha, options.Beta, local, given)
+          : QQRSpline::approximate(
+              data.Points, context.Knots, closed, options.Alpha, options.Beta, local, given));
       return built;
     }
     // Automatic: alpha = beta at every knot (C2), from the larger of Alpha and
@@ -721,7 +729,7 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     constexpr double RegularSpeed = 0.02;
     constexpr double EvaluationBudget = 2.5e4;
     std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
-    QQRKnotShape shape;
+    QQRKnotShape shape = given;
     auto make = [&](const std::vector<double>& exponents, const QQRKnotShape& knotShape) {
       return std::make_unique<QQRSpline>(options.Interpolate
           ? QQRSpline::interpolate(data.Points, context.Knots, closed, exponents, local, knotShape)

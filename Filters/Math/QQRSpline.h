@@ -167,7 +167,8 @@ public:
    * exponent per point (alpha = beta at that knot; points.size() values).
    */
   static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, double alpha, double beta, const Local& local = {});
+    bool closed, double alpha, double beta, const Local& local = {},
+    const QQRKnotShape& knotShape = {});
   static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
     bool closed, const std::vector<double>& knotExponents, const Local& local = {});
 
@@ -181,7 +182,8 @@ public:
    * y_{i-1} = -h_i (1 - z_{i-2}) / (2 h_{i-1}).
    */
   static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, double alpha, double beta, const Local& local = {});
+    bool closed, double alpha, double beta, const Local& local = {},
+    const QQRKnotShape& knotShape = {});
   static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
     bool closed, const std::vector<double>& knotExponents, const Local& local = {});
 
@@ -254,7 +256,9 @@ double raisedQQRExponent(double alpha, double maxAlpha);
 /**
  * Builder of qqr B-spline-like curves for fitPolyline: interpolation or the
  * data as control polygon (its shape reference then being the data polygon),
- * fixed exponents or automatic. Per-point values (PointValues) are ignored.
+ * fixed exponents or automatic. The context's PointValues, if any, are the
+ * local bias z per point (the start of the automatic search); values outside
+ * [0, 1] or NaN take Z's.
  * Automatic: alpha = beta per knot and the local shape parameters per point
  * (QQRKnotShape: z; x and y too for the control polygon). Through
  * preserveShape, each round sweeps the failing spans (collinearity first) and

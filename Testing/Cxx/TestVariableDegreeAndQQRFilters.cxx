@@ -171,3 +171,41 @@ TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
   });
   EXPECT_EQ(CountMessages(low.Warnings, { "at or below 3" }), 1) << Joined(low.Warnings);
 }
+
+TEST(QQRSplineFilter, LocalBiasPerPointFromAnInputArray)
+{
+  // z = 0.5 at every point but point 8, whose -1 falls back to the paper's z.
+  const auto data = DeepCopy(ReadData("akima.vtp"));
+  vtkNew<vtkDoubleArray> given;
+  given->SetName("bias");
+  given->SetNumberOfTuples(data->GetNumberOfPoints());
+  given->Fill(0.5);
+  given->SetValue(8, -1.0);
+  data->GetPointData()->AddArray(given);
+  const FilterRun half = RunFilter<QQR>(data, [](QQR* f) {
+    f->AutomaticOff();
+    f->SetZArrayName("bias");
+  });
+  const FilterRun custom = RunFilter<QQR>(data, [](QQR* f) {
+    f->AutomaticOff();
+    f->SetLocalParameters(QQR::CUSTOM);
+    f->SetZ(0.5);
+  });
+  ExpectNoMessages(half);
+  // 0.5 everywhere but point 8: the same curve as Custom z = 0.5 away from
+  // the spans point 8's z reaches, another one near it.
+  const auto a = LinesOf(half.Output)[0];
+  const auto b = LinesOf(custom.Output)[0];
+  ASSERT_EQ(a.size(), b.size());
+  double near = 0.0, far = 0.0;
+  vtkDataArray* span = PointArray(half.Output, "SpanIndex");
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    const double d = Norm(PointOf(half.Output, a[i]) - PointOf(custom.Output, b[i]));
+    const int j = static_cast<int>(span->GetTuple1(a[i]));
+    (j >= 5 && j <= 9 ? near : far) = std::max(j >= 5 && j <= 9 ? near : far, d);
+  }
+  Measure("Akima, z array with one fallback: largest difference to z = 0.5 near point 8", near);
+  EXPECT_EQ(far, 0.0);
+  EXPECT_GT(near, 1e-6);
+}

@@ -333,7 +333,7 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "QQRSpline": ["Input", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
                               "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames",
                               "Mode", "Automatic", "Alpha", "Beta", "MaxAlpha", "LocalParameters", "X", "Y",
-                              "Z", "Continuity", "FrenetOrder"]}[name]
+                              "Z", "ZArray", "Continuity", "FrenetOrder"]}[name]
     check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
 
 # =========================================================================== CubicSpline defaults
