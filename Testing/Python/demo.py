@@ -8,6 +8,10 @@ PolylineShapeAnalysis on the same data with the spline as its Curve input, and
 writes into DIR (created if missing):
   aorta-cubic.vtp, aorta-analysis.vtp, akima-cubic.vtp, akima-analysis.vtp
   aorta-gencubic.vtp, akima-gencubic.vtp  the shape-preserving generalized cubic
+  aorta-vdps.vtp, aorta-vdps-approximation.vtp, aorta-quintic.vtp, aorta-qqr.vtp
+                               the other families on the aorta (the variable
+                               degree spline interpolating and approximating
+                               with 40 knots, the C4 quintic, the qqr curve)
   aorta-torsion.png            the aorta curves as tubes coloured by torsion
                                (Cool to Warm, symmetric range clipped to the 95th
                                percentile of |torsion|), data points as dots
@@ -166,6 +170,21 @@ for key, result in results.items():
     for i in range(len(violations)):
         print("  %s line %d: ShapeViolations %d (the cubic: %d), largest tension %.4g"
               % (key, i, violations[i], array(result[4], "ShapeViolations", True)[i], tension[i]))
+
+print("The other families on the aorta (each at its defaults, automatic)")
+aorta_source = results["aorta"][0]
+for name, proxy in (("vdps", VariableDegreeSpline(Input=aorta_source)),
+                    ("vdps-approximation", VariableDegreeSpline(Input=aorta_source, Mode="Approximate Local",
+                                                                NumberOfKnots=40)),
+                    ("quintic", TensionQuinticSpline(Input=aorta_source)),
+                    ("qqr", QQRSpline(Input=aorta_source))):
+    SaveData(out_path("aorta-%s.vtp" % name), proxy=proxy)
+    fitted = servermanager.Fetch(proxy)
+    violations, curvature = array(fitted, "ShapeViolations", True), array(fitted, "Curvature")
+    print("  %-19s ShapeViolations %s%s, largest curvature %.3g"
+          % (name, " / ".join("%d" % v for v in violations),
+             " (against psi, the least-squares polygon on its knots)" if "approximation" in name else "",
+             curvature.max()))
 
 # =========================================================================== aorta-curvature-torsion.png
 # (Made before the render views: after a render view's screenshot, the charts in
