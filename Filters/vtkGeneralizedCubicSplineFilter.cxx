@@ -5,7 +5,6 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
-#include <string>
 
 vtkStandardNewMacro(vtkGeneralizedCubicSplineFilter);
 
@@ -56,8 +55,7 @@ int vtkGeneralizedCubicSplineFilter::RequestData(
 
 const char* vtkGeneralizedCubicSplineFilter::GetPointValuesArrayName()
 {
-  const char* name = this->TensionArrayName;
-  return name && std::string(name) != "None" ? name : nullptr;
+  return this->TensionArrayName;
 }
 
 shapesplines::BuiltCurve vtkGeneralizedCubicSplineFilter::BuildCurve(

@@ -5,7 +5,6 @@
 #include "vtkObjectFactory.h"
 
 #include <algorithm>
-#include <string>
 
 vtkStandardNewMacro(vtkQQRSplineFilter);
 
@@ -17,8 +16,7 @@ vtkQQRSplineFilter::~vtkQQRSplineFilter()
 
 const char* vtkQQRSplineFilter::GetPointValuesArrayName()
 {
-  const char* name = this->ZArrayName;
-  return name && std::string(name) != "None" ? name : nullptr;
+  return this->ZArrayName;
 }
 
 const char* vtkQQRSplineFilter::GetModeAsString()

@@ -77,8 +77,9 @@ public:
 
   ///@{
   /**
-   * Raise the shape parameters only at the knots of spans where the shape
-   * audit fails (default on); off, Alpha and Beta everywhere.
+   * Search the local parameters and exponents of the spans where the shape
+   * audit fails, for steps that lower the violations (default on); off,
+   * Alpha, Beta and the local parameters everywhere.
    */
   vtkSetMacro(Automatic, bool);
   vtkGetMacro(Automatic, bool);

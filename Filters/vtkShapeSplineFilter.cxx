@@ -174,6 +174,12 @@ const char* vtkShapeSplineFilter::GetSamplingModeAsString()
   return this->SamplingMode == ARC_LENGTH ? "ArcLength" : "Subdivisions";
 }
 
+const char* vtkShapeSplineFilter::GetPointValuesArrayInUse()
+{
+  const char* name = this->GetPointValuesArrayName();
+  return name && *name && std::string(name) != "None" ? name : nullptr;
+}
+
 int vtkShapeSplineFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -217,8 +223,8 @@ int vtkShapeSplineFilter::RequestData(
 
   vtkPoints* inPoints = input->GetPoints();
   vtkDataArray* pointValues = nullptr;
-  const char* valuesName = this->GetPointValuesArrayName();
-  if (valuesName && *valuesName)
+  const char* valuesName = this->GetPointValuesArrayInUse();
+  if (valuesName)
   {
     pointValues = input->GetPointData()->GetArray(valuesName);
     if (!pointValues)

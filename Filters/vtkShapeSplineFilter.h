@@ -175,10 +175,15 @@ protected:
 
   /**
    * The name of an input point array whose values the family reads per point
-   * (FitContext::PointValues), or null (default). A missing array is ignored
-   * with a warning; of a multi-component array the first component is used.
+   * (FitContext::PointValues), or null (default). Empty and "None" (what
+   * ParaView's array list sends for no array) mean none too. A missing array
+   * is ignored with a warning; of a multi-component array the first
+   * component is used.
    */
   virtual const char* GetPointValuesArrayName() { return nullptr; }
+
+  /// GetPointValuesArrayName(), or null when it names no array.
+  const char* GetPointValuesArrayInUse();
 
   int Parameterization = CHORD_LENGTH;
   bool Closed = false;

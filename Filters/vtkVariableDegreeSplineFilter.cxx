@@ -4,7 +4,6 @@
 
 #include "vtkObjectFactory.h"
 
-#include <string>
 
 vtkStandardNewMacro(vtkVariableDegreeSplineFilter);
 
@@ -35,7 +34,7 @@ int vtkVariableDegreeSplineFilter::RequestData(
     vtkWarningMacro("MaxDegree " << this->MaxDegree << " is below Degree " << this->Degree
                                  << ": the automatic mode cannot raise the degrees.");
   }
-  if (this->Mode != INTERPOLATE && this->GetPointValuesArrayName())
+  if (this->Mode != INTERPOLATE && this->GetPointValuesArrayInUse())
   {
     vtkWarningMacro("DegreeArrayName is used by interpolation only; the approximation starts "
                     "every knot from Degree.");
@@ -45,8 +44,7 @@ int vtkVariableDegreeSplineFilter::RequestData(
 
 const char* vtkVariableDegreeSplineFilter::GetPointValuesArrayName()
 {
-  const char* name = this->DegreeArrayName;
-  return name && std::string(name) != "None" ? name : nullptr;
+  return this->DegreeArrayName;
 }
 
 shapesplines::BuiltCurve vtkVariableDegreeSplineFilter::BuildCurve(

@@ -16,6 +16,8 @@ using Vec3 = Eigen::Vector3d;
 /// Position and derivatives 0..MaxDerivativeOrder at one parameter value.
 constexpr int MaxDerivativeOrder = 4;
 using Derivatives = std::array<Vec3, MaxDerivativeOrder + 1>;
+/// Values 0..4 of a scalar function (a basis function) and its derivatives at one point.
+using Jet = std::array<double, MaxDerivativeOrder + 1>;
 
 /// A family's shape parameter per span (degree, tension...), which the filters
 /// write out generically: a point array Name and a cell array Max<Name> or Min<Name>.

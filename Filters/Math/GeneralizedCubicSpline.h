@@ -18,9 +18,6 @@ enum class SpaceKind : int
   VariableDegree = 3 ///< (1 - t)^k, degree k >= 3 (k = 3: cubic, k -> inf: polygon)
 };
 
-/// Values 0..4 of a function and its derivatives at one point.
-using Jet = std::array<double, 5>;
-
 /**
  * The kernels of one interval's space span{1, t, u, v}, normalised as in the
  * paper's (4), (5): u(0) = 1, u(1) = u'(1) = u''(1) = 0 and v(1) = 1,

@@ -5,7 +5,6 @@
 #define shapesplines_QQRSpline_h
 
 #include "FitPolyline.h"
-#include "GeneralizedCubicSpline.h" // Jet
 
 #include <array>
 #include <limits>

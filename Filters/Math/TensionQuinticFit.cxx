@@ -43,11 +43,7 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
   const FitOptions& fit, double coordinateNoise)
 {
   QuinticApproximation result;
-  for (int i = 0; i < numberOfKnots; ++i)
-  {
-    result.Knots.push_back(u.front() + (u.back() - u.front()) * i / (numberOfKnots - 1));
-  }
-  result.Knots.back() = u.back();
+  result.Knots = uniformKnots(u, numberOfKnots);
   result.Polygon = leastSquaresPolygon(points, u, result.Knots);
   CleanPolyline reference;
   reference.Points = result.Polygon;

@@ -814,6 +814,17 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   return spline;
 }
 
+std::vector<double> uniformKnots(const std::vector<double>& u, int count)
+{
+  std::vector<double> knots;
+  for (int i = 0; i < count; ++i)
+  {
+    knots.push_back(u.front() + (u.back() - u.front()) * i / (count - 1));
+  }
+  knots.back() = u.back();
+  return knots;
+}
+
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots)
 {

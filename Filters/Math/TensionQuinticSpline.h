@@ -140,6 +140,10 @@ private:
   std::vector<std::array<double, 6>> XBezier;
   std::vector<std::array<Vec3, 6>> CBezier;
 };
+/// count >= 2 knots spread uniformly over the data parameters u, ending
+/// exactly at u's ends: the knots of the least-squares approximations.
+std::vector<double> uniformKnots(const std::vector<double>& u, int count);
+
 /**
  * L*: the piecewise linear curve with vertices at knots closest in least
  * squares to points at parameters u (knots[0] <= u <= knots.back()).

@@ -1,7 +1,7 @@
 #include "VariableDegreeSpline.h"
 
 #include "SparseSolve.h"
-#include "TensionQuinticSpline.h" // leastSquaresPolygon: psi of section 4.2
+#include "TensionQuinticSpline.h" // uniformKnots, leastSquaresPolygon: psi of section 4.2
 
 #include <algorithm>
 #include <cmath>
@@ -548,12 +548,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   int knotCount, double startDegree)
 {
   const std::vector<double>& u = context.Knots;
-  std::vector<double> knots;
-  for (int i = 0; i < knotCount; ++i)
-  {
-    knots.push_back(u.front() + (u.back() - u.front()) * i / (knotCount - 1));
-  }
-  knots.back() = u.back();
+  const std::vector<double> knots = uniformKnots(u, knotCount);
   CleanPolyline psi;
   psi.Points = leastSquaresPolygon(context.Data.Points, u, knots);
   std::vector<double> degrees(knotCount, startDegree);
@@ -569,15 +564,8 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   auto tighten = [&](const std::vector<char>& failing) {
     if (!local)
     {
-      // The global scheme: every degree together (Theorem 4).
-      bool raised = false;
-      for (double& k : degrees)
-      {
-        const double next = raisedDegree(k, options.MaxDegree);
-        raised = raised || next > k;
-        k = next;
-      }
-      return raised;
+      // The global scheme: every degree together (Theorem 4), as if every span failed.
+      return raiseFailing(degrees, std::vector<char>(failing.size(), 1), false, options.MaxDegree);
     }
     bool raised = raiseFailing(degrees, failing, false, options.MaxDegree);
     for (int j = 0; j < static_cast<int>(failing.size()); ++j)

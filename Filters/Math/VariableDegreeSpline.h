@@ -6,7 +6,6 @@
 #define shapesplines_VariableDegreeSpline_h
 
 #include "FitPolyline.h"
-#include "GeneralizedCubicSpline.h" // Jet
 
 #include <array>
 #include <vector>
@@ -91,8 +90,6 @@ public:
 
   const VariableDegreeParameters& parameters() const { return this->Parameters; }
   const std::vector<Vec3>& deBoorPoints() const { return this->DeBoor; }
-  /// Per span, the pseudo Bezier control points b_i0..b_i5.
-  const std::vector<std::array<Vec3, 6>>& bezierNet() const { return this->Net; }
 
 private:
   VariableDegreeSpline(std::vector<double> knots, bool closed);
@@ -100,7 +97,7 @@ private:
 
   VariableDegreeParameters Parameters;
   std::vector<Vec3> DeBoor;
-  std::vector<std::array<Vec3, 6>> Net;
+  std::vector<std::array<Vec3, 6>> Net; ///< per span, the pseudo Bezier points b_i0..b_i5
 };
 
 enum class VariableDegreeMode : int
