@@ -39,6 +39,23 @@ VariableDegreeParameters uniformParameters(size_t knots, double degree, double l
   return { std::vector<double>(knots, degree), std::vector<double>(knots, lambda) };
 }
 
+/// count random points of the unit cube on an open line, with knot spacings
+/// spacing + U(0, 1) (per point: its coordinates, then its spacing).
+std::pair<std::vector<Vec3>, std::vector<double>> randomOpenData(int count, double spacing, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec3> points;
+  std::vector<double> u = { 0.0 };
+  for (int i = 0; i < count; ++i)
+  {
+    points.emplace_back(unit(random), unit(random), unit(random));
+    u.push_back(u.back() + spacing + unit(random));
+  }
+  u.pop_back();
+  return { points, u };
+}
+
 /// Largest relative jump of derivative `order` over the interior knots.
 double largestJump(const Curve& curve, int order)
 {
@@ -231,16 +248,7 @@ TEST(VariableDegreeSpline, C3AtEveryKnotWithRandomDegreesAndTensions)
 
 TEST(VariableDegreeSpline, DegreeFiveAndTensionOneIsTheC4QuinticWithNaturalEnds)
 {
-  std::mt19937 random(8);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Vec3> points;
-  std::vector<double> u = { 0.0 };
-  for (int i = 0; i < 10; ++i)
-  {
-    points.emplace_back(unit(random), unit(random), unit(random));
-    u.push_back(u.back() + 0.3 + unit(random));
-  }
-  u.pop_back();
+  const auto [points, u] = randomOpenData(10, 0.3, 8);
   const auto spline = VariableDegreeSpline::interpolate(
     points, u, false, uniformParameters(u.size(), 5.0), VariableDegreeEnds::Natural);
   EXPECT_LE(largestJump(spline, 4), 1e-9);
@@ -296,16 +304,7 @@ TEST(VariableDegreeSpline, NaturalEndsNeedTensionAtTheEndKnots)
   // on D_-2, D_-1 any more, so s'' = s''' = 0 there pins them badly; clamped
   // ends, or lambda = 1 at the two knots next to each end (the builder's
   // choice for natural ends), keep the system well-conditioned.
-  std::mt19937 random(1);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::vector<Vec3> points;
-  std::vector<double> u = { 0.0 };
-  for (int i = 0; i < 20; ++i)
-  {
-    points.emplace_back(unit(random), unit(random), unit(random));
-    u.push_back(u.back() + 0.5 + unit(random));
-  }
-  u.pop_back();
+  const auto [points, u] = randomOpenData(20, 0.5, 1);
   const auto p = uniformParameters(points.size(), 200.0, std::pow(5.0 / 200.0, 3));
   const auto clamped = VariableDegreeSpline::interpolate(points, u, false, p, VariableDegreeEnds::Clamped);
   const auto natural = VariableDegreeSpline::interpolate(points, u, false, p, VariableDegreeEnds::Natural);
