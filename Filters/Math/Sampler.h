@@ -47,7 +47,7 @@ struct CurveSamples
   std::vector<int> Span;
   std::vector<double> SpanFraction; ///< (t - t_span) / (t_span+1 - t_span), in [0, 1]
   std::vector<Derivatives> Values; ///< position and derivatives 1..3 (4th left zero)
-  std::vector<double> ArcLength;   ///< from the first sample, by Gauss-Legendre quadrature
+  std::vector<double> ArcLength;   ///< from the first sample, by quadrature between samples (~1e-9 relative)
   double Length = 0.0;             ///< whole curve, including a closed curve's seam span
 
   int size() const { return static_cast<int>(this->Parameter.size()); }

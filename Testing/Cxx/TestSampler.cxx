@@ -106,3 +106,62 @@ TEST(Sampler, ClosedCurvesDoNotRepeatTheSeam)
   EXPECT_LT(samples.Parameter.back(), 4.0);
   EXPECT_GT(samples.Length, samples.ArcLength.back());
 }
+
+TEST(Sampler, ArcLengthBetweenSamplesWhereTheSpeedVariesFast)
+{
+  // Uneven points on uniform knots: the speed varies by 100x within spans.
+  // The lengths between samples (a rule on the samples' own derivatives) are
+  // checked against the 8-point Gauss-Legendre rule on 64 pieces of the gap.
+  std::vector<Vec3> points;
+  std::vector<double> knots;
+  for (int i = 0; i < 12; ++i)
+  {
+    const double x = std::pow(1.9, i);
+    points.emplace_back(x, std::sin(x), 0.1 * i);
+    knots.push_back(i);
+  }
+  for (const bool closed : { false, true })
+  {
+    if (closed)
+    {
+      knots.push_back(12);
+    }
+    const CubicSpline s = CubicSpline::interpolate(points, knots, closed);
+    const CurveSamples samples = sampleCurve(s, SamplingOptions{});
+    double reference = 0.0;
+    for (int k = 1; k <= samples.size(); ++k)
+    {
+      const int span = samples.Span[k - 1];
+      const double a = samples.Parameter[k - 1];
+      const double b = k < samples.size() && samples.Span[k] == span ? samples.Parameter[k]
+                                                                     : s.knots()[span + 1];
+      for (int piece = 0; piece < 64; ++piece)
+      {
+        reference += arcLength(s, span, a + (b - a) * piece / 64, a + (b - a) * (piece + 1) / 64);
+      }
+      const double computed = k < samples.size() ? samples.ArcLength[k] : samples.Length;
+      if (k < samples.size() || closed)
+      {
+        ASSERT_NEAR(computed, reference, 1e-9 * reference) << "sample " << k << " closed " << closed;
+      }
+    }
+  }
+}
+
+TEST(Sampler, ArcLengthWhereTheCurveStops)
+{
+  // x = t^2 from t = 0 (a not-a-knot cubic reproduces it): the speed is 0 at
+  // the first sample, where the rule on derivatives cannot be used.
+  std::vector<Vec3> points;
+  std::vector<double> t;
+  for (const double u : { 0.0, 0.5, 1.2, 2.0 })
+  {
+    points.emplace_back(u * u, 0, 0);
+    t.push_back(u);
+  }
+  const CurveSamples samples = sampleCurve(CubicSpline::interpolate(points, t, false), SamplingOptions{});
+  for (int k = 0; k < samples.size(); ++k)
+  {
+    EXPECT_NEAR(samples.ArcLength[k], samples.Parameter[k] * samples.Parameter[k], 1e-12);
+  }
+}
