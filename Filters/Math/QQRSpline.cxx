@@ -31,35 +31,56 @@ void checkExponent(double a, const char* what)
  */
 Jet complementPow(double x, double xc, double p, int order)
 {
+  const double logY = x < 0.5 ? std::log1p(-x) : 0.0;
+  auto power = [&](double e) {
+    if (x < 0.5)
+    {
+      return std::exp(e * logY);
+    }
+    if (xc > 0.0 && e >= 1.0 && e <= 16.0 && e == std::floor(e))
+    {
+      // Small integer exponents (alpha = beta = 4 by default) without pow:
+      // xc <= 1/2 is exact, so each product costs an ulp of a value <= 2^-e.
+      double product = xc;
+      for (int k = 1; k < static_cast<int>(e); ++k)
+      {
+        product *= xc;
+      }
+      return product;
+    }
+    if (xc > 0.0)
+    {
+      return std::pow(xc, e);
+    }
+    return e > 0.0 ? 0.0 : Infinity;
+  };
+  // y^(p-m) for the derivatives: the lowest power by exp or pow, the others
+  // multiplied up by y (a rounding each, a few ulps: y >= 1/2 here or exact),
+  // so two exponentials instead of one per order; the value on its own.
+  const double y = x < 0.5 ? 1.0 - x : xc;
+  std::array<double, MaxDerivativeOrder + 1> powers{};
+  powers[0] = power(p);
+  if (order >= 1)
+  {
+    powers[order] = power(p - order);
+    const bool multiplyUp = std::isfinite(powers[order]) && y > 0.0;
+    for (int m = order - 1; m >= 1; --m)
+    {
+      powers[m] = multiplyUp ? powers[m + 1] * y : power(p - m);
+    }
+  }
   Jet out{};
   double factor = 1.0;
-  const double logY = x < 0.5 ? std::log1p(-x) : 0.0;
   for (int m = 0; m <= order; ++m)
   {
     if (factor == 0.0)
     {
       break; // this and every higher derivative vanish identically
     }
-    const double e = p - m;
-    double value = 0.0;
-    if (e == 0.0)
-    {
-      value = factor;
-    }
-    else if (x < 0.5)
-    {
-      value = factor * std::exp(e * logY);
-    }
-    else if (xc > 0.0)
-    {
-      value = factor * std::pow(xc, e);
-    }
-    else
-    {
-      value = e > 0.0 ? 0.0 : std::copysign(Infinity, factor);
-    }
+    // At y = 0 a negative exponent gives +-inf (powers[m] is inf), a zero one the factorial.
+    const double value = p - m == 0.0 ? factor : factor * powers[m];
     out[m] = m % 2 == 0 ? value : -value; // d/dx = -d/dy
-    factor *= e;
+    factor *= p - m;
   }
   return out;
 }
@@ -108,7 +129,8 @@ struct EndJets
   Jet Power, Linear, Tail;
 };
 
-EndJets endJets(double x, double xc, double a, int order)
+/// tail false: Tail left 0 (what a curve's evaluation, which never needs A2, skips).
+EndJets endJets(double x, double xc, double a, int order, bool tail = true)
 {
   EndJets jets;
   jets.Power = complementPow(x, xc, a, order);
@@ -116,6 +138,10 @@ EndJets endJets(double x, double xc, double a, int order)
   for (double& value : jets.Linear)
   {
     value *= a;
+  }
+  if (!tail)
+  {
+    return jets;
   }
   // G(x) = 1 - (1-x)^c (1 + c x), c = a - 1; G' = a (a - 1) x (1 - x)^(a-2).
   const double c = a - 1.0;
@@ -145,23 +171,16 @@ double times(double c, double v)
 {
   return c == 0.0 ? 0.0 : c * v;
 }
-} // namespace
 
-Jet qqrTail(double t, double a, int order)
-{
-  checkExponent(a, "a");
-  return endJets(t, 1.0 - t, a, std::clamp(order, 0, 4)).Tail;
-}
-
-std::array<Jet, 5> qqrBasis(double t, double alpha, double beta, int order)
+std::array<Jet, 5> basis(double t, double alpha, double beta, int order, bool withA2)
 {
   checkExponent(alpha, "alpha");
   checkExponent(beta, "beta");
   order = std::clamp(order, 0, 4);
   t = std::clamp(t, 0.0, 1.0);
   const double s = 1.0 - t;
-  const EndJets left = endJets(t, s, alpha, order);
-  const EndJets right = endJets(s, t, beta, order); // derivatives in s = 1 - t
+  const EndJets left = endJets(t, s, alpha, order, withA2);
+  const EndJets right = endJets(s, t, beta, order, withA2); // derivatives in s = 1 - t
   std::array<Jet, 5> a{};
   for (int m = 0; m <= order; ++m)
   {
@@ -177,6 +196,18 @@ std::array<Jet, 5> qqrBasis(double t, double alpha, double beta, int order)
   // G(t; alpha) - (A3 + A4) for t <= 1/2, G(s; beta) - (A0 + A1) beyond.
   a[2][0] = t <= 0.5 ? left.Tail[0] - (a[3][0] + a[4][0]) : right.Tail[0] - (a[0][0] + a[1][0]);
   return a;
+}
+} // namespace
+
+Jet qqrTail(double t, double a, int order)
+{
+  checkExponent(a, "a");
+  return endJets(t, 1.0 - t, a, std::clamp(order, 0, 4)).Tail;
+}
+
+std::array<Jet, 5> qqrBasis(double t, double alpha, double beta, int order)
+{
+  return basis(t, alpha, beta, order, true);
 }
 
 QQRLocalParameters cubicLocalParameters(const std::vector<double>& h)
@@ -547,18 +578,19 @@ Derivatives QQRSpline::evaluateOnSpan(int span, double x, int order) const
   const double h = this->Knots[span + 1] - this->Knots[span];
   const double t = std::clamp((x - this->Knots[span]) / h, 0.0, 1.0);
   const auto& [alpha, beta] = this->Exponents[span];
-  const auto a = qqrBasis(t, alpha, beta, order);
+  const auto a = basis(t, alpha, beta, order, false);
   const auto& e = this->Bezier[span];
   // (2.10): Q = E2 + sum_{j != 2} A_j (E_j - E2); A2 is not needed and its
   // derivatives (sums of the others) never enter.
   Derivatives out;
   out.fill(Vec3::Zero());
   double scale = 1.0; // h^-m: derivatives with respect to the curve parameter
+  const std::array<Vec3, 4> offsets = { e[0] - e[2], e[1] - e[2], e[3] - e[2], e[4] - e[2] };
   for (int m = 0; m <= order; ++m)
   {
     for (const int j : { 0, 1, 3, 4 })
     {
-      const Vec3 d = e[j] - e[2];
+      const Vec3& d = offsets[j < 2 ? j : j - 1];
       for (int c = 0; c < 3; ++c)
       {
         out[m][c] += times(d[c], a[j][m]);
