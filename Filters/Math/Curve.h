@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -27,6 +28,46 @@ struct SpanParameter
   std::vector<double> Values; ///< one per span
   bool CellSummaryIsMaximum = true;
 };
+
+/**
+ * Derivatives 0..order (in u) of the Bezier curve with points b at u in
+ * [0, 1], from one de Casteljau pass: when r + 1 points remain, the r-th
+ * derivative is n!/(n-r)! times their r-th forward difference (differences
+ * and de Casteljau steps commute), n the degree. Orders above n, or above
+ * MaxDerivativeOrder, are left zero.
+ */
+template <typename T, size_t Points>
+std::array<T, MaxDerivativeOrder + 1> bezierDerivatives(
+  const std::array<T, Points>& b, double u, int order, const T& zero)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  std::array<T, MaxDerivativeOrder + 1> out;
+  out.fill(zero);
+  std::array<T, Points> w = b;
+  int remaining = static_cast<int>(Points);
+  for (int r = std::min({ order, degree, MaxDerivativeOrder }); r >= 0; --r)
+  {
+    for (; remaining > r + 1; --remaining)
+    {
+      for (int j = 0; j + 1 < remaining; ++j)
+      {
+        w[j] = (1.0 - u) * w[j] + u * w[j + 1];
+      }
+    }
+    std::array<T, Points> difference = w;
+    double factor = 1.0;
+    for (int level = r; level > 0; --level)
+    {
+      factor *= degree - level + 1;
+      for (int j = 0; j < level; ++j)
+      {
+        difference[j] = difference[j + 1] - difference[j];
+      }
+    }
+    out[r] = factor * difference[0];
+  }
+  return out;
+}
 
 /**
  * A piecewise curve s(t) on knots t_0 < t_1 < ... < t_n (n spans). Families

@@ -578,8 +578,21 @@ Derivatives QQRSpline::evaluateOnSpan(int span, double x, int order) const
   const double h = this->Knots[span + 1] - this->Knots[span];
   const double t = std::clamp((x - this->Knots[span]) / h, 0.0, 1.0);
   const auto& [alpha, beta] = this->Exponents[span];
-  const auto a = basis(t, alpha, beta, order, false);
   const auto& e = this->Bezier[span];
+  if (alpha == 4.0 && beta == 4.0)
+  {
+    // The qqr basis at alpha = beta = 4 is the quartic Bernstein basis
+    // (A2 = 6 t^2 (1-t)^2): a quartic Bezier span, no powers to take.
+    Derivatives out = bezierDerivatives(e, t, order, Vec3(Vec3::Zero()));
+    double scale = 1.0;
+    for (int m = 1; m <= order; ++m)
+    {
+      scale /= h;
+      out[m] *= scale;
+    }
+    return out;
+  }
+  const auto a = basis(t, alpha, beta, order, false);
   // (2.10): Q = E2 + sum_{j != 2} A_j (E_j - E2); A2 is not needed and its
   // derivatives (sums of the others) never enter.
   Derivatives out;

@@ -249,40 +249,6 @@ double abscissa(const std::vector<double>& xi, int m, int spans, bool closed, do
   return closed ? xi[wrap(m, spans)] + floorDiv(m, spans) * period : xi[m + 2];
 }
 
-/// Bezier derivatives 0..order (with respect to the local parameter) at u, from
-/// one de Casteljau pass: when r + 1 points remain, the r-th derivative is
-/// 5!/(5-r)! times their r-th forward difference (differences and de Casteljau
-/// steps commute).
-template <typename T>
-std::array<T, 5> bezierDerivatives(const std::array<T, 6>& b, double u, int order, const T& zero)
-{
-  constexpr std::array<double, 5> fallingFactorial = { 1.0, 5.0, 20.0, 60.0, 120.0 };
-  std::array<T, 5> out;
-  out.fill(zero);
-  std::array<T, 6> w = b;
-  int points = 6;
-  for (int r = std::min(order, 4); r >= 0; --r)
-  {
-    for (; points > r + 1; --points)
-    {
-      for (int j = 0; j + 1 < points; ++j)
-      {
-        w[j] = (1.0 - u) * w[j] + u * w[j + 1];
-      }
-    }
-    std::array<T, 6> difference = w;
-    for (int level = r; level > 0; --level)
-    {
-      for (int j = 0; j < level; ++j)
-      {
-        difference[j] = difference[j + 1] - difference[j];
-      }
-    }
-    out[r] = fallingFactorial[r] * difference[0];
-  }
-  return out;
-}
-
 /// The rows of X or C at the ends of an open curve: first and second local
 /// derivatives of span 0 at its start, of the last span at its end.
 std::array<Eigen::Matrix<double, 1, 6>, 2> endRows(const SpanWeights& w, bool start)
