@@ -272,7 +272,7 @@ double raisedQQRExponent(double alpha, double maxAlpha);
  * regular, and C2. The score never rises: a search's last curve is its best;
  * the better of the two searches is returned.
  * Measured (tests): violations fixed -> automatic, interpolation: Akima 3 -> 0,
- * RPN 15A 3 -> 1, titanium 15 -> 0; control polygon: Akima 1 -> 0, the others
+ * RPN 15A 3 -> 1, titanium 15 -> 1; control polygon: Akima 1 -> 0, the others
  * 0 already.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);

@@ -212,21 +212,32 @@ def accuracy(turns=6, seed=2):
     return errors
 
 
+def peak_resident_kib():
+    """This process's peak resident memory (VmHWM) in KiB."""
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmHWM:"):
+                return int(line.split()[1])
+    raise RuntimeError("no VmHWM in /proc/self/status")
+
+
 def cold_run(plugin, n):
     """Fits one line of n points once, in a fresh pvpython (cold memory: what a
     user's first run pays, page faults included): seconds, output points and the
     peak resident memory before and after the fit, in KiB."""
     import shutil
     import subprocess
-    code = ("import resource, sys, time; sys.argv=['x']\n"
+    # VmHWM, not getrusage's ru_maxrss: Linux keeps ru_maxrss across exec, so a
+    # child of this (large) process would report the parent's peak.
+    code = ("import sys, time; sys.argv=['x']\n"
             "from paraview import simple\n"
             "simple.LoadPlugin(%r, remote=False)\n"
             "import benchmark as b\n"
             "poly = b.to_polydata(b.helix_lines(1, %d))\n"
-            "before = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "before = b.peak_resident_kib()\n"
             "run = b.ours(poly, 'Sequential')\n"
             "start = time.perf_counter(); points = run(); seconds = time.perf_counter() - start\n"
-            "peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss\n"
+            "peak = b.peak_resident_kib()\n"
             "print(seconds, points, before, peak)\n" % (plugin, n))
     here = os.path.dirname(os.path.abspath(__file__))
     result = subprocess.run([shutil.which("pvpython"), "-c", code], cwd=here, capture_output=True, text=True,
