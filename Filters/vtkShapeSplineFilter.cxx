@@ -19,10 +19,12 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <initializer_list>
 #include <limits>
 #include <string>
+#include <thread>
 #include <utility>
 
 namespace
@@ -143,6 +145,43 @@ std::pair<int, double> DataInterval(
   return { interval, std::clamp((t - knots[interval]) / width, 0.0, 1.0) };
 }
 
+/**
+ * Progress by lines done, weighted by their points, reported from the thread
+ * that runs RequestData only (VTK's events are not thread-safe; with the
+ * sequential SMP backend, Debian's default, that is every line) at most once
+ * per 1% of the phase [From, To].
+ */
+class LineProgress
+{
+public:
+  LineProgress(vtkAlgorithm* algorithm, vtkIdType totalPoints, double from, double to)
+    : Algorithm(algorithm)
+    , From(from)
+    , To(to)
+    , Total(totalPoints)
+  {
+  }
+
+  void lineDone(const LineWork& line)
+  {
+    const vtkIdType done = this->Done += static_cast<vtkIdType>(line.PointIds.size());
+    const double fraction = this->Total > 0 ? static_cast<double>(done) / this->Total : 1.0;
+    if (std::this_thread::get_id() == this->Owner && fraction - this->Reported >= 0.01)
+    {
+      this->Reported = fraction;
+      this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * fraction);
+    }
+  }
+
+private:
+  vtkAlgorithm* Algorithm;
+  double From, To;
+  vtkIdType Total;
+  std::atomic<vtkIdType> Done{ 0 };
+  const std::thread::id Owner = std::this_thread::get_id();
+  double Reported = 0.0; ///< only read and written by Owner
+};
+
 template <typename Array>
 vtkSmartPointer<Array> Renamed(Array* source, const char* name)
 {
@@ -232,6 +271,12 @@ int vtkShapeSplineFilter::RequestData(
       vtkWarningMacro("No point array named '" << valuesName << "' in the input: ignored.");
     }
   }
+  vtkIdType inputLinePoints = 0;
+  for (const LineWork& line : lines)
+  {
+    inputLinePoints += static_cast<vtkIdType>(line.PointIds.size());
+  }
+  LineProgress fitting(this, inputLinePoints, 0.0, 0.8);
   vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
     {
@@ -254,6 +299,7 @@ int vtkShapeSplineFilter::RequestData(
       {
         line.Error = e.what();
       }
+      fitting.lineDone(line);
     }
   });
   if (this->GetAbortExecute())
@@ -364,10 +410,17 @@ int vtkShapeSplineFilter::RequestData(
   connectivity->SetNumberOfTuples(cellOffsets->GetValue(lineCount));
 
   double* xyz = vtkDoubleArray::SafeDownCast(outPoints->GetData())->GetPointer(0);
+  vtkIdType keptLinePoints = 0;
+  for (const size_t k : kept)
+  {
+    keptLinePoints += static_cast<vtkIdType>(lines[k].PointIds.size());
+  }
+  LineProgress sampling(this, keptLinePoints, 0.8, 0.95);
   vtkSMPTools::For(0, lineCount, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
+    for (vtkIdType c = begin; c < end && !this->GetAbortExecute(); ++c)
     {
       LineWork& line = lines[kept[c]];
+      sampling.lineDone(line);
       const auto& fit = line.Fit;
       vtkIdType* cell = connectivity->GetPointer(cellOffsets->GetValue(c));
       vtkIdType next = firstSample[c];
@@ -429,6 +482,10 @@ int vtkShapeSplineFilter::RequestData(
       }
     }
   });
+  if (this->GetAbortExecute())
+  {
+    return 1; // an aborted run leaves the output empty
+  }
   this->UpdateProgress(0.95);
   vtkNew<vtkCellArray> outLines;
   outLines->SetData(cellOffsets, connectivity);

@@ -980,6 +980,53 @@ TEST(Parallel, SameOutputWithThreadsAndSequential)
   }
   EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
 }
+
+TEST(Progress, MovesWithTheLinesAndAbortLeavesAnEmptyOutput)
+{
+  const auto input = RandomLines(400);
+  BackendScope scope("Sequential", 1);
+  vtkNew<vtkCubicSplineFilter> filter;
+  filter->SetInputData(input);
+  MessageLog log({ filter });
+  struct Watch
+  {
+    std::vector<double> Values;
+    double AbortAt = 2.0;
+  } watch;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&watch);
+  observer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
+    auto* w = static_cast<Watch*>(clientData);
+    w->Values.push_back(*static_cast<double*>(callData));
+    if (w->Values.back() >= w->AbortAt)
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  // Fitting and writing report by lines (1% steps), not only at phase ends.
+  EXPECT_GE(watch.Values.size(), 50u);
+  EXPECT_TRUE(std::is_sorted(watch.Values.begin(), watch.Values.end()));
+  EXPECT_EQ(watch.Values.back(), 1.0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfLines(), 400);
+
+  for (const double abortAt : { 0.3, 0.85 }) // while fitting, while writing
+  {
+    watch = Watch{ {}, abortAt };
+    filter->Modified();
+    filter->Update();
+    // The run stops at the next line: at most the end-of-run event follows.
+    const auto aborted = std::find_if(
+      watch.Values.begin(), watch.Values.end(), [&](double v) { return v >= abortAt; });
+    ASSERT_NE(aborted, watch.Values.end()) << abortAt;
+    EXPECT_LE(watch.Values.end() - aborted, 2) << abortAt;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0) << abortAt;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfLines(), 0) << abortAt;
+    filter->SetAbortExecute(0);
+  }
+  EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
+}
 } // namespace
 
 // ===========================================================================
