@@ -146,10 +146,11 @@ std::pair<int, double> DataInterval(
 }
 
 /**
- * Progress by lines done, weighted by their points, reported from the thread
- * that runs RequestData only (VTK's events are not thread-safe; with the
- * sequential SMP backend, Debian's default, that is every line) at most once
- * per 1% of the phase [From, To].
+ * Progress by lines done, weighted by their points, and inside a long line by
+ * the math core's ProgressCallback; reported from the thread that runs
+ * RequestData only (VTK's events are not thread-safe; with the sequential SMP
+ * backend, Debian's default, that is every line) at most once per 1% of the
+ * phase [From, To], never backwards.
  */
 class LineProgress
 {
@@ -164,16 +165,28 @@ public:
 
   void lineDone(const LineWork& line)
   {
-    const vtkIdType done = this->Done += static_cast<vtkIdType>(line.PointIds.size());
-    const double fraction = this->Total > 0 ? static_cast<double>(done) / this->Total : 1.0;
-    if (std::this_thread::get_id() == this->Owner && fraction - this->Reported >= 0.01)
+    this->report(this->Done += static_cast<vtkIdType>(line.PointIds.size()));
+  }
+
+  /// Inside a line not yet done: a fraction of its points. False once aborted.
+  bool within(const LineWork& line, double fraction)
+  {
+    this->report(this->Done + fraction * static_cast<double>(line.PointIds.size()));
+    return !this->Algorithm->GetAbortExecute();
+  }
+
+private:
+  void report(double done)
+  {
+    const double fraction = this->Total > 0 ? done / this->Total : 1.0;
+    if (std::this_thread::get_id() == this->Owner && fraction - this->Reported >= 0.01 &&
+      !this->Algorithm->GetAbortExecute())
     {
       this->Reported = fraction;
       this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * fraction);
     }
   }
 
-private:
   vtkAlgorithm* Algorithm;
   double From, To;
   vtkIdType Total;
@@ -291,9 +304,11 @@ int vtkShapeSplineFilter::RequestData(
       {
         values.push_back(pointValues->GetComponent(line.PointIds[i], 0));
       }
+      shapesplines::FitOptions lineOptions = options;
+      lineOptions.Progress = [&](double fraction) { return fitting.within(line, fraction); };
       try
       {
-        line.Fit = shapesplines::fitPolyline(points, options, build, values);
+        line.Fit = shapesplines::fitPolyline(points, lineOptions, build, values);
       }
       catch (const std::exception& e)
       {
@@ -420,7 +435,6 @@ int vtkShapeSplineFilter::RequestData(
     for (vtkIdType c = begin; c < end && !this->GetAbortExecute(); ++c)
     {
       LineWork& line = lines[kept[c]];
-      sampling.lineDone(line);
       const auto& fit = line.Fit;
       vtkIdType* cell = connectivity->GetPointer(cellOffsets->GetValue(c));
       vtkIdType next = firstSample[c];
@@ -442,10 +456,20 @@ int vtkShapeSplineFilter::RequestData(
           spanIndex->SetValue(next, 0);
           *cell++ = next++;
         }
+        sampling.lineDone(line);
         continue;
       }
       // Sampled here, a line at a time, and written straight into the output.
-      const shapesplines::SampledCurve sampled = shapesplines::sampleFit(fit);
+      shapesplines::SampledCurve sampled;
+      try
+      {
+        sampled = shapesplines::sampleFit(
+          fit, [&](double fraction) { return sampling.within(line, fraction); });
+      }
+      catch (const shapesplines::FitAborted&)
+      {
+        break; // the abort flag is set: the output is dropped below
+      }
       const auto& samples = sampled.Samples;
       line.Length = samples.Length;
       line.Chord = fit.Data.Closed
@@ -480,6 +504,7 @@ int vtkShapeSplineFilter::RequestData(
       {
         *cell = firstSample[c];
       }
+      sampling.lineDone(line);
     }
   });
   if (this->GetAbortExecute())

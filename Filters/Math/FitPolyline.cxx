@@ -65,7 +65,8 @@ std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& sample
 }
 
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
-  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+  const ProgressCallback& progress)
 {
   // Span by span: the audit keeps no samples, so auditing costs no memory traffic.
   subdivisions = std::max(subdivisions, 1);
@@ -78,6 +79,7 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   Vec3 lastNormal;
   for (int j = 0; j < spans; ++j)
   {
+    reportProgress(progress, j, 1024, static_cast<double>(j) / spans);
     // Both ends of the span, so that its frames see both knots.
     for (int k = 0; k <= subdivisions; ++k)
     {
@@ -122,7 +124,8 @@ BuiltCurve fixedOrPreserved(bool automatic, const FitContext& context,
 ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference) const
 {
   return auditCurve(curve, reference, discreteShape(reference, this->Options.Tolerances),
-    this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise);
+    this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
+    this->Options.Progress);
 }
 
 std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyline& reference,
@@ -137,7 +140,7 @@ std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyl
   for (int round = 0;; ++round)
   {
     audit = auditCurve(*curve, reference, shape, options.Tolerances, options.AuditSubdivisions,
-      context.CoordinateNoise);
+      context.CoordinateNoise, options.Progress);
     if (audit.preserving() || round >= maxRounds)
     {
       break;
@@ -158,11 +161,11 @@ std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyl
   return curve;
 }
 
-SampledCurve sampleFit(const FittedPolyline& fit)
+SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress)
 {
   SampledCurve sampled;
   CurveSamples& samples = sampled.Samples;
-  samples = sampleCurve(*fit.Spline, fit.Plan);
+  samples = sampleCurve(*fit.Spline, fit.Plan, progress);
   sampled.Frames =
     frenetFrames(samples.Values, flatCurvature(*fit.Spline, samples, fit.Data, fit.CoordinateNoise));
   // Back to data units. The knot samples of an interpolation are the data points, exactly.
@@ -260,7 +263,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.Shape = discreteShape(reference, options.Tolerances);
   fit.Audit = built.Audit ? *std::move(built.Audit)
                           : auditCurve(*fit.Spline, reference, fit.Shape, options.Tolerances,
-                              options.AuditSubdivisions, fit.CoordinateNoise);
+                              options.AuditSubdivisions, fit.CoordinateNoise, options.Progress);
   SamplingOptions sampling = options.Sampling;
   sampling.TargetLength /= fit.Scale; // the curve is normalised; the option is in data units
   fit.Plan = planSamples(*fit.Spline, sampling);

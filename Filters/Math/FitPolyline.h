@@ -27,6 +27,8 @@ struct FitOptions
   /// Relative precision of the input coordinates (FLT_EPSILON for float input):
   /// curvature within their rounding counts as zero.
   double CoordinatePrecision = 2.220446049250313e-16;
+  /// Progress of the shape audits of one line (see ProgressCallback); none by default.
+  ProgressCallback Progress;
 };
 
 /**
@@ -134,7 +136,8 @@ std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& sample
 
 /// Audits a curve through data on a uniform sampling (for automatic tension loops).
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
-  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+  const ProgressCallback& progress = {});
 
 /// Coordinates beyond this are refused: a curve through them (its overshoot,
 /// its arc length) can leave the double range.
@@ -156,7 +159,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
  * data points, exactly.
  * Written once for every family. The fit must have a Spline.
  */
-SampledCurve sampleFit(const FittedPolyline& fit);
+SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress = {});
 } // namespace shapesplines
 
 #endif

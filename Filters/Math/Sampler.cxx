@@ -133,6 +133,14 @@ double parameterAtLength(const Curve& curve, int span, double target, double tot
 }
 } // namespace
 
+void reportProgress(const ProgressCallback& progress, long step, long every, double fraction)
+{
+  if (progress && step % every == 0 && !progress(fraction))
+  {
+    throw FitAborted();
+  }
+}
+
 double arcLength(const Curve& curve, int span, double a, double b)
 {
   return speedIntegral(curve, span, a, b);
@@ -184,8 +192,10 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
   return sampleCurve(curve, planSamples(curve, options));
 }
 
-CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan)
+CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan, const ProgressCallback& progress)
 {
+  // Progress: the samples (3/4 of the work), then their arc lengths.
+  constexpr long Every = 4096;
   const int spans = curve.numberOfSpans();
   const auto& knots = curve.knots();
   const bool byArcLength = !plan.SpanLengths.empty();
@@ -196,6 +206,7 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan)
   samples.Values.reserve(count);
   samples.SpanFraction.reserve(count);
   auto addSample = [&](int span, double t) {
+    reportProgress(progress, samples.size(), Every, 0.75 * samples.size() / count);
     samples.Parameter.push_back(t);
     samples.Span.push_back(span);
     samples.SpanFraction.push_back((t - knots[span]) / (knots[span + 1] - knots[span]));
@@ -229,6 +240,7 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan)
   samples.ArcLength.resize(samples.size(), 0.0);
   for (int k = 1; k < samples.size(); ++k)
   {
+    reportProgress(progress, k, Every, 0.75 + 0.25 * k / count);
     const int span = samples.Span[k - 1];
     const bool sameSpan = samples.Span[k] == span;
     samples.ArcLength[k] = samples.ArcLength[k - 1] +

@@ -4,10 +4,34 @@
 
 #include "Curve.h"
 
+#include <functional>
+#include <stdexcept>
 #include <vector>
 
 namespace shapesplines
 {
+/**
+ * Called now and then during long work on one line (sampling, shape audit)
+ * with the fraction of that work done (an automatic mode audits many curves,
+ * so the fraction can start over); returning false stops the work with
+ * FitAborted.
+ */
+using ProgressCallback = std::function<bool(double fraction)>;
+
+/// Thrown when a ProgressCallback asks to stop.
+class FitAborted : public std::runtime_error
+{
+public:
+  FitAborted()
+    : std::runtime_error("aborted")
+  {
+  }
+};
+
+/// Calls progress, if any, with fraction when step is a multiple of every;
+/// throws FitAborted when it says stop.
+void reportProgress(const ProgressCallback& progress, long step, long every, double fraction);
+
 struct SamplingOptions
 {
   enum class Mode
@@ -56,7 +80,8 @@ struct CurveSamples
 /// Arc length of curve between parameters a <= b inside one span (Gauss-Legendre).
 double arcLength(const Curve& curve, int span, double a, double b);
 
-CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan);
+CurveSamples sampleCurve(
+  const Curve& curve, const SamplingPlan& plan, const ProgressCallback& progress = {});
 CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options);
 } // namespace shapesplines
 

@@ -165,3 +165,31 @@ TEST(Sampler, ArcLengthWhereTheCurveStops)
     EXPECT_NEAR(samples.ArcLength[k], samples.Parameter[k] * samples.Parameter[k], 1e-12);
   }
 }
+
+TEST(Sampler, ProgressIsReportedInOrderAndCanStopTheWork)
+{
+  std::vector<Vec3> points;
+  std::vector<double> t;
+  for (int i = 0; i < 3000; ++i)
+  {
+    points.emplace_back(std::cos(0.1 * i), std::sin(0.1 * i), 0.01 * i);
+    t.push_back(i);
+  }
+  const CubicSpline s = CubicSpline::interpolate(points, t, false);
+  const SamplingPlan plan = planSamples(s, SamplingOptions{});
+  std::vector<double> fractions;
+  const CurveSamples samples = sampleCurve(s, plan, [&](double fraction) {
+    fractions.push_back(fraction);
+    return true;
+  });
+  EXPECT_EQ(samples.size(), plan.size());
+  // 30001 samples: every 4096 while sampling, then while measuring arc length.
+  EXPECT_GE(fractions.size(), 10u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_GE(fractions.front(), 0.0);
+  EXPECT_LT(fractions.back(), 1.0);
+  EXPECT_GT(fractions.back(), 0.9);
+  int calls = 0;
+  EXPECT_THROW(sampleCurve(s, plan, [&](double) { return ++calls < 3; }), FitAborted);
+  EXPECT_EQ(calls, 3);
+}
