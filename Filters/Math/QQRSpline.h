@@ -270,9 +270,12 @@ double raisedQQRExponent(double alpha, double maxAlpha);
  * chord-following step that keeps it is taken. Steps that make a span slower
  * than 1e-3 of its Bezier polygon are refused (speedRatio), so the curve stays
  * regular, and C2. The score never rises: a search's last curve is its best;
- * the better of the two searches is returned.
+ * the better of the two searches is returned. The search runs on whichever
+ * orientation of the line comes first by its segment lengths and turning
+ * angles, and its choices are mapped back (point i -> n-1-i, z -> 1 - z on
+ * the mirrored span, x <-> y): a reversed line gets the same curve.
  * Measured (tests): violations fixed -> automatic, interpolation: Akima 3 -> 0,
- * RPN 15A 3 -> 1, titanium 15 -> 1; control polygon: Akima 1 -> 0, the others
+ * RPN 15A 3 -> 1, titanium 15 -> 0; control polygon: Akima 1 -> 0, the others
  * 0 already.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
