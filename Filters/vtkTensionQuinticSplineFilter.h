@@ -85,7 +85,8 @@ public:
   ///@{
   /**
    * Knots of the approximation (default 9, at least 2); a line with fewer
-   * than NumberOfKnots + 4 points gets fewer knots.
+   * than 2 NumberOfKnots points gets half its points as knots (at most
+   * points - 4; lines of fewer than 6 points are interpolated).
    */
   vtkSetClampMacro(NumberOfKnots, int, 2, 1000000);
   vtkGetMacro(NumberOfKnots, int);

@@ -74,7 +74,11 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
 {
   return [quintic](const FitContext& context) {
     const int count = static_cast<int>(context.Data.Points.size());
-    const int knots = std::min(quintic.ApproximationKnots, count - 4);
+    // At least two points per knot, as the variable degree family: with more
+    // knots the least squares fit the noise (measured on a noisy helix of 49
+    // points: 37 knots give curvature 7.5 for 0.4, 45 a condition of 8e18);
+    // and the n + 5 de Boor points of n spans need n + 5 points.
+    const int knots = std::min({ quintic.ApproximationKnots, count / 2, count - 4 });
     if (quintic.ApproximationKnots == 0 || context.Data.Closed || knots < 2)
     {
       return interpolate(context, quintic);

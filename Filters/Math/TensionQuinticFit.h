@@ -19,7 +19,8 @@ struct QuinticFitOptions
   double Floor = QuinticTensionFloor;
   int MaxRounds = 64;
   /// 0: interpolate. Otherwise approximate an open line in least squares with
-  /// this many knots (at least 2; at most points - 4, fewer points interpolate),
+  /// this many knots (at least 2; at most half the points and points - 4; a
+  /// line too short for 2 knots is interpolated),
   /// keeping the torsion signs of L* (approximateKeepingTorsionSigns).
   int ApproximationKnots = 0;
 };

@@ -235,6 +235,36 @@ TEST(TensionQuinticSplineFilter, ApproximationKeepsTheTorsionSignsOfItsPolygon)
     filter->GetModeAsString(), violations(output), d);
 }
 
+TEST(TensionQuinticSplineFilter, ApproximationTakesAtMostHalfThePointsAsKnots)
+{
+  // A helix of radius 2 (curvature 0.4) at 8 points per turn, 49 points with
+  // deterministic noise of 0.5% of the radius. Asked for 45 knots, the fit
+  // used 45 (points - 4) before and followed the noise (curvature from 4e-4
+  // to 0.95 here). Now 24 knots, as for 24 asked.
+  std::vector<Point> points;
+  for (int i = 0; i < 49; ++i)
+  {
+    const double t = 2.0 * M_PI * i / 8.0;
+    const double noise = 0.01 * std::sin(12.9898 * i + 1.0);
+    points.push_back({ 2.0 * std::cos(t) + noise, 2.0 * std::sin(t) - noise, t + noise });
+  }
+  auto input = polyline(points);
+  for (const int asked : { 24, 45 })
+  {
+    vtkNew<vtkTensionQuinticSplineFilter> filter;
+    filter->SetModeToApproximate();
+    filter->AutomaticOff();
+    filter->SetNumberOfKnots(asked);
+    filter->SetNumberOfSubdivisions(2);
+    vtkPolyData* output = run(filter, input);
+    EXPECT_EQ(output->GetNumberOfPoints(), 23 * 2 + 1) << asked; // 24 knots, 23 spans
+    double range[2];
+    output->GetPointData()->GetArray("Curvature")->GetRange(range);
+    EXPECT_LT(range[1], 0.8) << asked;
+    EXPECT_GT(range[0], 0.2) << asked;
+  }
+}
+
 TEST(TensionQuinticSplineFilter, AutomaticModeKeepsTheShapeTheFixedSplineBreaks)
 {
   for (auto input : { akima(), helixUpAndDown() })
