@@ -579,40 +579,43 @@ Derivatives QQRSpline::evaluateOnSpan(int span, double x, int order) const
   const double t = std::clamp((x - this->Knots[span]) / h, 0.0, 1.0);
   const auto& [alpha, beta] = this->Exponents[span];
   const auto& e = this->Bezier[span];
+  Derivatives out; // derivatives in t
   if (alpha == 4.0 && beta == 4.0)
   {
     // The qqr basis at alpha = beta = 4 is the quartic Bernstein basis
     // (A2 = 6 t^2 (1-t)^2): a quartic Bezier span, no powers to take.
-    Derivatives out = bezierDerivatives(e, t, order, Vec3(Vec3::Zero()));
-    double scale = 1.0;
-    for (int m = 1; m <= order; ++m)
-    {
-      scale /= h;
-      out[m] *= scale;
-    }
-    return out;
+    out = bezierDerivatives(e, t, order, Vec3(Vec3::Zero()));
   }
-  const auto a = basis(t, alpha, beta, order, false);
-  // (2.10): Q = E2 + sum_{j != 2} A_j (E_j - E2); A2 is not needed and its
-  // derivatives (sums of the others) never enter.
-  Derivatives out;
-  out.fill(Vec3::Zero());
-  double scale = 1.0; // h^-m: derivatives with respect to the curve parameter
-  const std::array<Vec3, 4> offsets = { e[0] - e[2], e[1] - e[2], e[3] - e[2], e[4] - e[2] };
-  for (int m = 0; m <= order; ++m)
+  else
   {
-    for (const int j : { 0, 1, 3, 4 })
+    // (2.10): Q = E2 + sum_{j != 2} A_j (E_j - E2); A2 is not needed and its
+    // derivatives (sums of the others) never enter.
+    const auto a = basis(t, alpha, beta, order, false);
+    constexpr std::array<int, 4> outer = { 0, 1, 3, 4 };
+    std::array<Vec3, 4> offsets;
+    for (int i = 0; i < 4; ++i)
     {
-      const Vec3& d = offsets[j < 2 ? j : j - 1];
-      for (int c = 0; c < 3; ++c)
+      offsets[i] = e[outer[i]] - e[2];
+    }
+    out.fill(Vec3::Zero());
+    for (int m = 0; m <= order; ++m)
+    {
+      for (int i = 0; i < 4; ++i)
       {
-        out[m][c] += times(d[c], a[j][m]);
+        for (int c = 0; c < 3; ++c)
+        {
+          out[m][c] += times(offsets[i][c], a[outer[i]][m]);
+        }
       }
     }
-    out[m] *= scale;
-    scale /= h;
+    out[0] += e[2];
   }
-  out[0] += e[2];
+  double scale = 1.0; // h^-m: derivatives with respect to the curve parameter
+  for (int m = 1; m <= order; ++m)
+  {
+    scale /= h;
+    out[m] *= scale;
+  }
   return out;
 }
 
@@ -668,10 +671,18 @@ double loweredQQRExponent(double alpha, double minAlpha)
 {
   return std::max(minAlpha, 3.0 + 0.5 * (alpha - 3.0));
 }
-} // namespace
 
-namespace
+/// The curve of the options' mode with exponents and local parameters per point.
+std::unique_ptr<QQRSpline> qqrCurve(const QQROptions& options, const CleanPolyline& data,
+  const std::vector<double>& knots, const std::vector<double>& exponents,
+  const QQRKnotShape& knotShape)
 {
+  const QQRSpline::Local local{ options.X, options.Y, options.Z };
+  return std::make_unique<QQRSpline>(options.Interpolate
+      ? QQRSpline::interpolate(data.Points, knots, data.Closed, exponents, local, knotShape)
+      : QQRSpline::approximate(data.Points, knots, data.Closed, exponents, local, knotShape));
+}
+
 /// One qqr fit (qqrBuilder's curve) in the orientation the context gives.
 BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
 {
@@ -767,9 +778,7 @@ BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
   std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
   QQRKnotShape shape = given;
   auto make = [&](const std::vector<double>& exponents, const QQRKnotShape& knotShape) {
-    return std::make_unique<QQRSpline>(options.Interpolate
-        ? QQRSpline::interpolate(data.Points, context.Knots, closed, exponents, local, knotShape)
-        : QQRSpline::approximate(data.Points, context.Knots, closed, exponents, local, knotShape));
+    return qqrCurve(options, data, context.Knots, exponents, knotShape);
   };
   shape = make(kappa, shape)->knotShape();
   if (options.Interpolate)
@@ -900,45 +909,33 @@ BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
     }
     return sum;
   };
+  auto failingSpans = [](const ShapeAudit& audit) {
+    return static_cast<int>(std::count_if(
+      audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; }));
+  };
   auto scoreOf = [&](const QQRSpline& curve, const ShapeAudit& audit) {
-    return Score{ audit.violations(),
-      static_cast<int>(std::count_if(
-        audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; })),
-      deficiency(curve, audit) };
+    return Score{ audit.violations(), failingSpans(audit), deficiency(curve, audit) };
   };
   double evaluations = 0.0; // span audits
-  // The score after some steps (and that curve's audit), worst if a span
-  // within two of a step's index turns irregular.
-  auto trySteps = [&](const std::vector<Step>& steps, ShapeAudit& audit) {
-    std::vector<double> before;
-    for (const Step& step : steps)
-    {
-      double& value = (*values[step.Kind])[step.Index];
-      before.push_back(value);
-      value = step.Value;
-    }
+  // The score after a step (and that curve's audit), worst if a span within
+  // two of the step's index turns irregular.
+  auto tryStep = [&](const Step& step, ShapeAudit& audit) {
+    double& value = (*values[step.Kind])[step.Index];
+    const double before = value;
+    value = step.Value;
     const auto curve = make(kappa, shape);
-    for (size_t q = steps.size(); q-- > 0;)
-    {
-      (*values[steps[q].Kind])[steps[q].Index] = before[q];
-    }
+    value = before;
     evaluations += spans;
-    for (const Step& step : steps)
+    for (int offset = -2; offset <= 2; ++offset)
     {
-      for (int offset = -2; offset <= 2; ++offset)
+      const int k = span(step.Index, offset);
+      if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
       {
-        const int k = span(step.Index, offset);
-        if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
-        {
-          return worst;
-        }
+        return worst;
       }
     }
     audit = context.audit(*curve, data);
     return scoreOf(*curve, audit);
-  };
-  auto tryStep = [&](const Step& step, ShapeAudit& audit) {
-    return trySteps({ step }, audit);
   };
   auto tighten = [&](const std::vector<char>&) {
     const std::unique_ptr<QQRSpline> current = make(kappa, shape);
@@ -952,9 +949,8 @@ BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
         order.push_back(k);
       }
     }
-    const unsigned collinear = 1u << static_cast<int>(ShapeCriterion::Collinearity);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return (audit.SpanMask[a] & collinear) > (audit.SpanMask[b] & collinear);
+      return (audit.SpanMask[a] & collinearBit) > (audit.SpanMask[b] & collinearBit);
     });
     bool changed = false;
     for (const int k : order)
@@ -1016,9 +1012,6 @@ BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
     std::unique_ptr<Curve> curve =
       preserveShape(context, data, build, tighten, options.MaxRounds, &audit);
     return std::make_pair(std::move(curve), std::move(audit));
-  };
-  auto failingSpans = [](const ShapeAudit& audit) {
-    return std::count_if(audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; });
   };
   auto result = search(false);
   if (!result.second.preserving())
@@ -1143,12 +1136,12 @@ BuiltCurve qqrFitEitherWay(const QQROptions& options, const FitContext& context)
       mapped.Y[mirror(k)] = shape.X[k];
     }
   }
-  const QQRSpline::Local local{ options.X, options.Y, options.Z };
   BuiltCurve built;
-  built.Spline = std::make_unique<QQRSpline>(options.Interpolate
-      ? QQRSpline::interpolate(data.Points, context.Knots, data.Closed, kappa, local, mapped)
-      : QQRSpline::approximate(data.Points, context.Knots, data.Closed, kappa, local, mapped));
-  built.ShapeReference = found.ShapeReference ? std::optional<CleanPolyline>(data) : std::nullopt;
+  built.Spline = qqrCurve(options, data, context.Knots, kappa, mapped);
+  if (!options.Interpolate)
+  {
+    built.ShapeReference = data; // the control polygon is the shape of reference
+  }
   built.Audit = context.audit(*built.Spline, data);
   return built;
 }

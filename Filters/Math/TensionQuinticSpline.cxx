@@ -707,18 +707,6 @@ double TensionQuinticSpline::localParameter(int span, double x) const
   {
     return 0.0;
   }
-  // X and X' from one de Casteljau pass (the last level's two points).
-  auto valueAndSlope = [&xb](double u) {
-    std::array<double, 6> w = xb;
-    for (int level = 5; level > 1; --level)
-    {
-      for (int j = 0; j < level; ++j)
-      {
-        w[j] = (1.0 - u) * w[j] + u * w[j + 1];
-      }
-    }
-    return std::make_pair((1.0 - u) * w[0] + u * w[1], 5.0 * (w[1] - w[0]));
-  };
   // Start from the inverse of X's cubic Hermite interpolant at the span's
   // ends (slopes 1 / X'), a step or two closer than the chord's guess.
   const double width = xb[5] - xb[0];
@@ -731,14 +719,14 @@ double TensionQuinticSpline::localParameter(int span, double x) const
   double lo = 0.0, hi = 1.0;
   for (int iteration = 0; iteration < 200; ++iteration)
   {
-    const auto [value, slope] = valueAndSlope(u);
-    const double f = value - x;
+    const auto d = bezierDerivatives(xb, u, 1, 0.0); // X and X', one de Casteljau pass
+    const double f = d[0] - x;
     if (f == 0.0)
     {
       break;
     }
     (f < 0.0 ? lo : hi) = u;
-    double next = u - f / slope;
+    double next = u - f / d[1];
     const bool newton = next > lo && next < hi;
     if (!newton)
     {
