@@ -3,6 +3,7 @@
 // by curvature on the same scale and with its curvature comb: the cubic's
 // comb flips side on the flat run (wiggles), the automatic curve's does not.
 // Arguments: -D <Data dir> -V <baseline.png> -T <temp dir>.
+#include "ImageTestUtilities.h"
 #include "vtkCurvatureCombFilter.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
 
@@ -17,10 +18,8 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkScalarBarActor.h"
 #include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTextActor.h"
@@ -102,9 +101,8 @@ int TestGeneralizedCubicImage(int argc, char* argv[])
 {
   vtkNew<vtkTesting> testing;
   testing->AddArguments(argc, argv);
-  if (!testing->IsValidImageSpecified())
+  if (!shapesplines_test::HasBaseline(testing))
   {
-    std::cerr << "ERROR: no baseline image given (-V): the test cannot pass without one.\n";
     return EXIT_FAILURE;
   }
   vtkNew<vtkXMLPolyDataReader> reader;
@@ -125,24 +123,13 @@ int TestGeneralizedCubicImage(int argc, char* argv[])
   AddPanel(window, reader->GetOutputPort(), vtkGeneralizedCubicSplineFilter::EXPONENTIAL, 0.0,
     0.5, colors, "automatic exponential tension");
 
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(colors);
-  bar->SetTitle("Curvature");
-  bar->SetNumberOfLabels(5);
-  bar->SetWidth(0.8);
-  bar->SetHeight(0.6);
-  bar->SetPosition(0.1, 0.2);
-  bar->GetTitleTextProperty()->SetColor(0, 0, 0);
-  bar->GetLabelTextProperty()->SetColor(0, 0, 0);
   vtkNew<vtkRenderer> legend;
   legend->SetViewport(0.85, 0.0, 1.0, 1.0);
   legend->SetBackground(1, 1, 1);
-  legend->AddActor2D(bar);
+  legend->AddActor2D(shapesplines_test::ScalarBar(colors, "Curvature", 0.1, 0.2, 0.8, 0.6));
   window->AddRenderer(legend);
   window->Render();
-
-  const int result = vtkRegressionTestImageThreshold(window, 10.0);
-  return result == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  return shapesplines_test::CompareWithBaseline(argc, argv, window);
 }
 
 int main(int argc, char* argv[])

@@ -3,6 +3,7 @@
 // (left: the classical cubic B-spline) and automatic (right), each with its
 // control polygon and coloured by torsion on the same diverging scale.
 // Arguments: -V <baseline.png> -T <temp dir>.
+#include "ImageTestUtilities.h"
 #include "vtkQQRSplineFilter.h"
 
 #include "vtkActor.h"
@@ -20,10 +21,8 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
-#include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
-#include "vtkScalarBarActor.h"
 #include "vtkSphereSource.h"
 #include "vtkTesting.h"
 #include "vtkTextActor.h"
@@ -131,43 +130,26 @@ int TestQQRSplineImage(int argc, char* argv[])
 {
   vtkNew<vtkTesting> testing;
   testing->AddArguments(argc, argv);
-  if (!testing->IsValidImageSpecified())
+  if (!shapesplines_test::HasBaseline(testing))
   {
-    std::cerr << "ERROR: no baseline image given (-V): the test cannot pass without one.\n";
     return EXIT_FAILURE;
   }
   const vtkSmartPointer<vtkPolyData> polygon = HelixIntoLine();
   // The helix's torsion, 0.5 / (4 + 0.25) = 0.118, at the ends of the scale.
-  vtkNew<vtkColorTransferFunction> colors;
-  colors->SetColorSpaceToDiverging();
-  colors->AddRGBPoint(-0.2, 0.23, 0.299, 0.754);
-  colors->AddRGBPoint(0.0, 0.865, 0.865, 0.865);
-  colors->AddRGBPoint(0.2, 0.706, 0.016, 0.150);
+  const auto colors = shapesplines_test::DivergingColors(0.2);
 
   vtkNew<vtkRenderWindow> window;
   window->SetSize(900, 450);
   window->SetMultiSamples(0);
   AddPanel(window, polygon, false, 0.0, 0.42, colors);
   AddPanel(window, polygon, true, 0.42, 0.84, colors);
-  vtkNew<vtkScalarBarActor> bar;
-  bar->SetLookupTable(colors);
-  bar->SetTitle("Torsion");
-  bar->SetNumberOfLabels(5);
-  bar->SetWidth(0.6);
-  bar->SetHeight(0.8);
-  bar->SetPosition(0.25, 0.1);
-  bar->GetTitleTextProperty()->SetColor(0, 0, 0);
-  bar->GetLabelTextProperty()->SetColor(0, 0, 0);
   vtkNew<vtkRenderer> legend;
   legend->SetViewport(0.84, 0.0, 1.0, 1.0);
   legend->SetBackground(1, 1, 1);
-  legend->AddActor2D(bar);
+  legend->AddActor2D(shapesplines_test::ScalarBar(colors, "Torsion", 0.25, 0.1, 0.6, 0.8));
   window->AddRenderer(legend);
   window->Render();
-
-  // Threshold 10 (VTK 9.2's image difference metric): rendering noise stays far below.
-  const int result = vtkRegressionTestImageThreshold(window, 10.0);
-  return result == vtkTesting::PASSED ? EXIT_SUCCESS : EXIT_FAILURE;
+  return shapesplines_test::CompareWithBaseline(argc, argv, window);
 }
 
 int main(int argc, char* argv[])
