@@ -226,6 +226,11 @@ const char* vtkShapeSplineFilter::GetSamplingModeAsString()
   return this->SamplingMode == ARC_LENGTH ? "ArcLength" : "Subdivisions";
 }
 
+int vtkShapeSplineFilter::ApproximationKnotCount(int numberOfKnots)
+{
+  return numberOfKnots == 0 ? shapesplines::CrossValidatedKnots : std::max(2, numberOfKnots);
+}
+
 const char* vtkShapeSplineFilter::GetPointValuesArrayInUse()
 {
   const char* name = this->GetPointValuesArrayName();
@@ -350,6 +355,12 @@ int vtkShapeSplineFilter::RequestData(
     {
       vtkWarningMacro("Line (cell " << line.CellId
                                     << ") has two distinct points: output is a straight segment.");
+    }
+    if (this->Approximates() && fit.Spline && fit.interpolates())
+    {
+      vtkWarningMacro("Line (cell " << line.CellId << ") interpolated, not approximated: "
+                                    << (fit.Data.Closed ? "the approximation takes open lines only."
+                                                        : "too few points for an approximation."));
     }
     if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
     {

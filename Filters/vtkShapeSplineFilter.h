@@ -185,6 +185,14 @@ protected:
   /// GetPointValuesArrayName(), or null when it names no array.
   const char* GetPointValuesArrayInUse();
 
+  /// Whether the family is set to approximate (least squares) rather than
+  /// interpolate: lines it cannot approximate are reported.
+  virtual bool Approximates() const { return false; }
+
+  /// An approximating family's NumberOfKnots for the math core: 0 is
+  /// shapesplines::CrossValidatedKnots, 1 counts as 2.
+  static int ApproximationKnotCount(int numberOfKnots);
+
   int Parameterization = CHORD_LENGTH;
   bool Closed = false;
   int SamplingMode = SUBDIVISIONS;

@@ -40,7 +40,7 @@ shapesplines::BuiltCurve vtkTensionQuinticSplineFilter::BuildCurve(
   quintic.Automatic = this->Automatic;
   quintic.Gamma = this->Continuity == C3 ? this->Gamma : std::min(this->Gamma, 1.0);
   quintic.Lambda = this->Lambda;
-  quintic.ApproximationKnots = this->Mode == APPROXIMATE ? this->NumberOfKnots : 0;
+  quintic.ApproximationKnots = this->Mode == APPROXIMATE ? ApproximationKnotCount(this->NumberOfKnots) : 0;
   return shapesplines::tensionQuinticBuilder(quintic)(context);
 }
 

@@ -84,11 +84,13 @@ public:
 
   ///@{
   /**
-   * Knots of the approximation (default 9, at least 2); a line with fewer
-   * than 2 NumberOfKnots points gets half its points as knots (at most
-   * points - 4; lines of fewer than 6 points are interpolated).
+   * Knots of the approximation: 0 (default) lets generalized cross-validation
+   * choose them per line from the data, balancing bias against noise (Craven
+   * and Wahba); otherwise this many (1 counts as 2). Either way at
+   * most half the points and points - 4 (lines of fewer than 6 points are
+   * interpolated).
    */
-  vtkSetClampMacro(NumberOfKnots, int, 2, 1000000);
+  vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);
   vtkGetMacro(NumberOfKnots, int);
   ///@}
 
@@ -124,6 +126,7 @@ public:
 protected:
   vtkTensionQuinticSplineFilter();
   ~vtkTensionQuinticSplineFilter() override;
+  bool Approximates() const override { return this->Mode == APPROXIMATE; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -133,7 +136,7 @@ protected:
 
   int Continuity = C4;
   int Mode = INTERPOLATE;
-  int NumberOfKnots = 9;
+  int NumberOfKnots = 0;
   bool Automatic = true;
   double Gamma = 1.0;
   double Lambda = 1.0;

@@ -58,7 +58,7 @@ shapesplines::BuiltCurve vtkVariableDegreeSplineFilter::BuildCurve(
   options.MaxDegree = this->MaxDegree;
   options.Lambda = this->Lambda;
   options.ScaleLambdaWithDegree = this->ScaleLambdaWithDegree;
-  options.ApproximationKnots = this->Mode == INTERPOLATE ? 0 : this->NumberOfKnots;
+  options.ApproximationKnots = this->Mode == INTERPOLATE ? 0 : ApproximationKnotCount(this->NumberOfKnots);
   return shapesplines::variableDegreeBuilder(options)(context);
 }
 

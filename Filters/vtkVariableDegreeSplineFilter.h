@@ -68,10 +68,12 @@ public:
 
   ///@{
   /**
-   * Knots of the approximation (default 9, at least 2); a line with fewer
-   * than twice as many points gets fewer knots.
+   * Knots of the approximation: 0 (default) lets generalized cross-validation
+   * choose them per line from the data, balancing bias against noise (Craven
+   * and Wahba); otherwise this many (1 counts as 2). Either way at
+   * most half the points.
    */
-  vtkSetClampMacro(NumberOfKnots, int, 2, 1000000);
+  vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);
   vtkGetMacro(NumberOfKnots, int);
   ///@}
 
@@ -143,6 +145,7 @@ public:
 protected:
   vtkVariableDegreeSplineFilter();
   ~vtkVariableDegreeSplineFilter() override;
+  bool Approximates() const override { return this->Mode != INTERPOLATE; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -152,7 +155,7 @@ protected:
   const char* GetPointValuesArrayName() override;
 
   int Mode = INTERPOLATE;
-  int NumberOfKnots = 9;
+  int NumberOfKnots = 0;
   bool AutomaticDegrees = true;
   double Degree = 5.0;
   double MaxDegree = 200.0;

@@ -90,8 +90,8 @@ Options of fit:
   --mode M               quintic, qqr: interpolate (default) or approximate;
                          vdps: interpolate (default), approximate (the local
                          scheme), approximate-global or approximate-local
-  --knots N              approximate: number of knots (default 9, at most half
-                         the points)
+  --knots N              approximate: number of knots, at most half the points
+                         (default 0: chosen per line by cross-validation)
   --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1);
                          vdps: --lambda is the corner cutting tension (1)
   --degree K             vdps: starting (fixed with --fixed) degree (default 5)
@@ -676,7 +676,7 @@ std::map<std::string, FamilyFactory> Families()
        }
        filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
                                              : vtkTensionQuinticSplineFilter::INTERPOLATE);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 9, 2, 1e6)));
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
        filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
        filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
@@ -703,7 +703,7 @@ std::map<std::string, FamilyFactory> Families()
        }
        filter->SetEndCondition(ends == "clamped" ? vtkVariableDegreeSplineFilter::CLAMPED
                                                  : vtkVariableDegreeSplineFilter::NATURAL);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 9, 2, 1e6)));
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
        filter->SetAutomaticDegrees(!args.Flag("fixed"));
        filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
        filter->SetMaxDegree(args.Number("max-degree", 200.0, 5.0, 1000.0));

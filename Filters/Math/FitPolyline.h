@@ -139,6 +139,10 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
   const ProgressCallback& progress = {});
 
+/// An approximation's knot count chosen from the data by cross-validation
+/// (crossValidatedKnotCount in TensionQuinticSpline.h).
+constexpr int CrossValidatedKnots = -1;
+
 /// Coordinates beyond this are refused: a curve through them (its overshoot,
 /// its arc length) can leave the double range.
 constexpr double LargestCoordinate = 1e300;

@@ -78,13 +78,19 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     // knots the least squares fit the noise (measured on a noisy helix of 49
     // points: 37 knots give curvature 7.5 for 0.4, 45 a condition of 8e18);
     // and the n + 5 de Boor points of n spans need n + 5 points.
-    const int knots = std::min({ quintic.ApproximationKnots, count / 2, count - 4 });
-    if (quintic.ApproximationKnots == 0 || context.Data.Closed || knots < 2)
+    const int highest = std::min(count / 2, count - 4);
+    const bool knotsGiven = quintic.ApproximationKnots >= 2 || quintic.ApproximationKnots == CrossValidatedKnots;
+    if (!knotsGiven || context.Data.Closed || highest < 2)
     {
       return interpolate(context, quintic);
     }
-    QuinticApproximation approximation = approximateKeepingTorsionSigns(context.Data.Points,
-      context.Knots, knots, quintic, context.Options, context.CoordinateNoise);
+    const std::vector<Vec3>& points = context.Data.Points;
+    const std::vector<double>& u = context.Knots;
+    const int knots = quintic.ApproximationKnots != CrossValidatedKnots
+      ? std::min(quintic.ApproximationKnots, highest)
+      : crossValidatedKnotCount(points, u, highest);
+    QuinticApproximation approximation = approximateKeepingTorsionSigns(
+      points, u, knots, quintic, context.Options, context.CoordinateNoise);
     BuiltCurve built;
     built.Spline = std::move(approximation.Spline);
     CleanPolyline reference;

@@ -20,8 +20,9 @@ struct QuinticFitOptions
   int MaxRounds = 64;
   /// 0: interpolate. Otherwise approximate an open line in least squares with
   /// this many knots (at least 2; at most half the points and points - 4; a
-  /// line too short for 2 knots is interpolated),
-  /// keeping the torsion signs of L* (approximateKeepingTorsionSigns).
+  /// line too short for 2 knots is interpolated), or CrossValidatedKnots:
+  /// as many as generalized cross-validation chooses for the fixed
+  /// parameters, keeping the torsion signs of L* (approximateKeepingTorsionSigns).
   int ApproximationKnots = 0;
 };
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -804,6 +805,84 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count)
   }
   knots.back() = u.back();
   return knots;
+}
+
+int crossValidatedKnotCount(
+  const std::vector<Vec3>& points, const std::vector<double>& u, int highest)
+{
+  const double count = static_cast<double>(points.size());
+  std::map<int, double> scores;
+  auto score = [&](int knots) {
+    const auto known = scores.find(knots);
+    if (known != scores.end())
+    {
+      return known->second;
+    }
+    double gcv = std::numeric_limits<double>::infinity();
+    const double freedom = count - (knots + 4); // the n + 5 de Boor points of n spans
+    if (freedom > 0)
+    {
+      try
+      {
+        const TensionQuinticSpline curve = TensionQuinticSpline::approximate(points, u,
+          uniformKnots(u, knots), QuinticParameters::uniform(QuinticContinuity::C4, knots, 1.0, 1.0));
+        double rss = 0.0;
+        for (size_t j = 0; j < points.size(); ++j)
+        {
+          rss += (curve.evaluate(u[j], 0)[0] - points[j]).squaredNorm();
+        }
+        gcv = count * rss / (freedom * freedom);
+      }
+      catch (const std::exception&)
+      {
+        // A singular candidate is not chosen; the others decide.
+      }
+    }
+    return scores[knots] = gcv;
+  };
+  constexpr double GridGrowth = 1.15;
+  std::vector<int> grid;
+  for (int knots = 2; knots <= highest;
+       knots = std::max(knots + 1, static_cast<int>(knots * GridGrowth)))
+  {
+    grid.push_back(knots);
+  }
+  if (grid.empty())
+  {
+    return 2;
+  }
+  if (grid.back() != highest)
+  {
+    grid.push_back(highest);
+  }
+  size_t best = 0;
+  for (size_t i = 1; i < grid.size(); ++i)
+  {
+    best = score(grid[i]) < score(grid[best]) ? i : best;
+  }
+  // Ternary search between the best grid point's neighbours: GCV is close to
+  // unimodal there, and the scores already computed are reused.
+  int low = grid[best == 0 ? 0 : best - 1];
+  int high = grid[std::min(best + 1, grid.size() - 1)];
+  while (high - low > 2)
+  {
+    const int left = low + (high - low) / 3;
+    const int right = high - (high - low) / 3;
+    if (score(left) <= score(right))
+    {
+      high = right;
+    }
+    else
+    {
+      low = left;
+    }
+  }
+  int chosen = grid[best];
+  for (int knots = low; knots <= high; ++knots)
+  {
+    chosen = score(knots) < score(chosen) ? knots : chosen;
+  }
+  return chosen;
 }
 
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,

@@ -145,6 +145,23 @@ private:
 std::vector<double> uniformKnots(const std::vector<double>& u, int count);
 
 /**
+ * The knot count K in [2, highest] of a least-squares approximation of points
+ * at parameters u (an open line), by generalized cross-validation (Craven and
+ * Wahba, 1979) of the classical quintic spline (tension 1) on uniformKnots(u,
+ * K): K minimises N RSS(K) / (N - K - 4)^2 over the N points, the K + 4 de
+ * Boor points being the unknowns per coordinate. Too few knots leave a bias,
+ * too many fit the noise; the count whose fit best predicts left-out points
+ * balances the two without knowing the noise. Searched on a grid growing 15%
+ * a step, then refined between the best point's neighbours (about
+ * 2 log(highest) / log(1.15) fits of O(N) each). A candidate whose system is
+ * singular is not chosen; with none possible, 2. Both approximating families
+ * use it: the variable degree family's clamped ends would make the end
+ * spans' residual ask for ever more knots.
+ */
+int crossValidatedKnotCount(
+  const std::vector<Vec3>& points, const std::vector<double>& u, int highest);
+
+/**
  * L*: the piecewise linear curve with vertices at knots closest in least
  * squares to points at parameters u (knots[0] <= u <= knots.back()).
  */

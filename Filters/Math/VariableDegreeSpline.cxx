@@ -1,7 +1,7 @@
 #include "VariableDegreeSpline.h"
 
 #include "SparseSolve.h"
-#include "TensionQuinticSpline.h" // uniformKnots, leastSquaresPolygon: psi of section 4.2
+#include "TensionQuinticSpline.h" // uniformKnots, leastSquaresPolygon (psi of section 4.2), crossValidatedKnotCount
 
 #include <algorithm>
 #include <cmath>
@@ -596,9 +596,15 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
     const double start = std::max(LowestVariableDegree, options.Degree);
     VariableDegreeOptions capped = options;
     capped.MaxDegree = std::max(start, options.MaxDegree);
-    const int knots = std::min(options.ApproximationKnots, count / 2);
-    if (options.Mode != VariableDegreeMode::Interpolate && !context.Data.Closed && knots >= 2)
+    const int highest = count / 2;
+    const bool knotsGiven = options.ApproximationKnots >= 2 || options.ApproximationKnots == CrossValidatedKnots;
+    if (options.Mode != VariableDegreeMode::Interpolate && !context.Data.Closed && highest >= 2 && knotsGiven)
     {
+      const std::vector<Vec3>& points = context.Data.Points;
+      const std::vector<double>& u = context.Knots;
+      const int knots = options.ApproximationKnots != CrossValidatedKnots
+        ? std::min(options.ApproximationKnots, highest)
+        : crossValidatedKnotCount(points, u, highest);
       return approximateData(context, capped, knots, start);
     }
     std::vector<double> degrees(count, start);

@@ -129,7 +129,9 @@ struct VariableDegreeOptions
   /// degrees of the powers 1, 1.5, 2, 3 (the paper's Figure 5 uses 1/k).
   double Lambda = 1.0;
   bool ScaleLambdaWithDegree = true;
-  /// Approximation modes: the number of knots (at least 2, at most half the points).
+  /// Approximation modes: the number of knots (at least 2, at most half the
+  /// points), or CrossValidatedKnots: as many as generalized cross-validation
+  /// chooses for the start degree.
   int ApproximationKnots = 0;
   int MaxRounds = 64;
 };

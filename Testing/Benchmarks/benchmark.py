@@ -144,8 +144,13 @@ def trefoil_curve(t):
 # Methods compared on the same samples: ours fitted through the filters, and
 # what users do today (vtkSplineFilter then finite differences; finite
 # differences of the raw points, as VMTK's centerline geometry).
-APPROXIMATION_KNOTS_PER_TURN = 6
-METHODS = ("cubic", "VDPS interp.", "VDPS approx.", "quintic approx.", "vtkSpline+FD", "FD raw")
+# The approximations choose their knots by cross-validation (NumberOfKnots 0,
+# the default) on Uniform parameters: the samples are evenly spaced in t, and
+# chord lengths of noisy points carry the noise into the knots (the last column:
+# the quintic on chord-length parameters, the filters' default).
+METHODS = ("cubic", "VDPS interp.", "VDPS approx.", "quintic approx.", "quintic chord", "vtkSpline+FD",
+           "FD raw")
+UNIFORM = 0
 
 
 def filter_geometry(family, xyz, **properties):
@@ -170,8 +175,8 @@ def accuracy(turns=6, seed=2):
     from scipy.spatial import cKDTree
     rng = np.random.default_rng(seed)
     errors = []
-    print("\nAccuracy: median torsion error / RMS torsion, middle half (approximations: %d knots per turn, "
-          "fixed degree 5 / tension 1)" % APPROXIMATION_KNOTS_PER_TURN)
+    print("\nAccuracy: median torsion error / RMS torsion, middle half (approximations: knots by "
+          "cross-validation, uniform parameters, fixed degree 5 / tension 1)")
     print("%-8s %-7s %-8s" % ("curve", "noise", "pts/turn") + "".join("%16s" % m for m in METHODS))
     for curve_name, curve, periods in (("helix", helix_curve, turns), ("trefoil", trefoil_curve, 1)):
         dense_t = np.linspace(0, 2 * np.pi * periods, 200001)
@@ -181,19 +186,24 @@ def accuracy(turns=6, seed=2):
         for noise in (0.0, 0.001, 0.005, 0.01):
             for per_turn in (8, 16, 32, 64):
                 count = turns * per_turn
-                t = 2 * np.pi * periods * np.arange(count + 1) / count
-                xyz = curve(t)[0] + rng.normal(scale=noise * 2.0, size=(count + 1, 3))
-                knots = turns * min(per_turn, APPROXIMATION_KNOTS_PER_TURN) + 1
+                # The trefoil's period without its closing sample: a closed line would be
+                # interpolated (the approximations take open lines), and only the middle
+                # half is measured.
+                samples = count + 1 if periods > 1 else count
+                t = 2 * np.pi * periods * np.arange(samples) / count
+                xyz = curve(t)[0] + rng.normal(scale=noise * 2.0, size=(samples, 3))
                 fits = [filter_geometry("CubicSpline", xyz),
                         filter_geometry("VariableDegreeSpline", xyz),
-                        filter_geometry("VariableDegreeSpline", xyz, Mode="Approximate Local",
-                                        NumberOfKnots=knots, AutomaticDegrees=0),
-                        filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=knots,
+                        filter_geometry("VariableDegreeSpline", xyz, Mode="Approximate Local", NumberOfKnots=0,
+                                        AutomaticDegrees=0, Parameterization=UNIFORM),
+                        filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=0,
+                                        Automatic=0, Parameterization=UNIFORM),
+                        filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=0,
                                         Automatic=0)]
                 spline = vtkSplineFilter()
                 spline.SetInputData(to_polydata(xyz[None]))
                 spline.SetSubdivideToSpecified()
-                spline.SetNumberOfSubdivisions(count * SUBDIVISIONS)
+                spline.SetNumberOfSubdivisions((samples - 1) * SUBDIVISIONS)
                 spline.Update()
                 dense_vtk = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
                 fits.append((dense_vtk, *finite_difference_geometry(dense_vtk)))

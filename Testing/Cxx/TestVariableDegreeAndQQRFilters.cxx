@@ -1,12 +1,16 @@
 // vtkVariableDegreeSplineFilter and vtkQQRSplineFilter through VTK pipelines:
-// their options, their arrays and their warnings.
+// their options, their arrays and their warnings; and the knots of both
+// approximating families (with vtkTensionQuinticSplineFilter).
 #include "FilterTestUtilities.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkQQRSplineFilter.h"
+#include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
 
 #include <gtest/gtest.h>
+
+#include <random>
 
 using namespace shapesplines::filtertest;
 
@@ -26,6 +30,7 @@ FilterRun RunFilter(vtkPolyData* input, const std::function<void(Filter*)>& setu
 
 using VariableDegree = vtkVariableDegreeSplineFilter;
 using QQR = vtkQQRSplineFilter;
+using Quintic = vtkTensionQuinticSplineFilter;
 } // namespace
 
 TEST(VariableDegreeSplineFilter, AutomaticDegreesKeepTheShapeTheQuinticBreaks)
@@ -110,6 +115,89 @@ TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsi)
       EXPECT_EQ(CellArray(run.Output, "ShapeViolations")->GetTuple1(c), 0) << "line " << c;
     }
   }
+}
+
+/// Knots and median |curvature - 0.4| / 0.4 on the middle half of an approximation of a helix of
+/// radius 2 and pitch 2 pi (6 turns, 32 points per turn) with Gaussian noise
+/// of 0.5% of the radius (seeded), on uniform parameters, 2 samples per span.
+template <class Filter>
+std::pair<int, double> ApproximateNoisyHelix(
+  const std::function<void(Filter*)>& approximate, int numberOfKnots)
+{
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  Polyline points;
+  for (int i = 0; i <= 192; ++i)
+  {
+    const double t = 2.0 * Pi * i / 32.0;
+    points.push_back({ 2.0 * std::cos(t) + noise(rng), 2.0 * std::sin(t) + noise(rng), t + noise(rng) });
+  }
+  const FilterRun run = RunFilter<Filter>(PolylinesData({ points }), [&](Filter* f) {
+    approximate(f);
+    f->SetNumberOfKnots(numberOfKnots);
+    f->SetParameterizationToUniform();
+    f->SetNumberOfSubdivisions(2);
+  });
+  EXPECT_TRUE(run.Errors.empty() && run.Warnings.empty()) << Joined(run.Errors) << Joined(run.Warnings);
+  vtkDataArray* curvature = PointArray(run.Output, "Curvature");
+  std::vector<double> errors;
+  const vtkIdType count = curvature->GetNumberOfTuples();
+  for (vtkIdType i = count / 4; i < count - count / 4; ++i)
+  {
+    errors.push_back(std::abs(curvature->GetTuple1(i) - 0.4) / 0.4);
+  }
+  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+  return { static_cast<int>(run.Output->GetNumberOfPoints() - 1) / 2 + 1, errors[errors.size() / 2] };
+}
+
+TEST(ApproximatingFilters, NumberOfKnotsZeroLetsCrossValidationChoose)
+{
+  const std::function<void(Quintic*)> quintic = [](Quintic* f) {
+    f->SetModeToApproximate();
+    f->AutomaticOff();
+  };
+  const std::function<void(VariableDegree*)> variableDegree = [](VariableDegree* f) {
+    f->SetModeToApproximateLocal();
+    f->AutomaticDegreesOff();
+  };
+  EXPECT_EQ(vtkNew<Quintic>()->GetNumberOfKnots(), 0);
+  EXPECT_EQ(vtkNew<VariableDegree>()->GetNumberOfKnots(), 0);
+  const auto [quinticKnots, quinticError] = ApproximateNoisyHelix(quintic, 0);
+  const auto [variableKnots, variableError] = ApproximateNoisyHelix(variableDegree, 0);
+  const auto [allKnots, allError] = ApproximateNoisyHelix(quintic, 1000);
+  Measure("noisy helix, quintic: knots chosen", quinticKnots);
+  Measure("noisy helix, quintic: median curvature error", quinticError);
+  Measure("noisy helix, variable degree: median curvature error", variableError);
+  Measure("noisy helix, quintic with 96 knots: median curvature error", allError);
+  // Both families take the count the quintic's cross-validation chooses: fewer
+  // than the 96 the points allow, which follow the noise.
+  EXPECT_EQ(variableKnots, quinticKnots);
+  EXPECT_EQ(allKnots, 96);
+  EXPECT_GE(quinticKnots, 12);
+  EXPECT_LE(quinticKnots, 60);
+  EXPECT_LT(quinticError, 0.02);
+  EXPECT_LT(variableError, 0.02);
+  EXPECT_GT(allError, 2 * quinticError);
+}
+
+TEST(ApproximatingFilters, ClosedLinesAreInterpolatedWithAWarning)
+{
+  Polyline ring = Circle(1.0, 20);
+  ring.push_back(ring.front());
+  const auto input = PolylinesData({ ring });
+  const FilterRun quintic = RunFilter<Quintic>(input, [](Quintic* f) { f->SetModeToApproximate(); });
+  const FilterRun variable =
+    RunFilter<VariableDegree>(input, [](VariableDegree* f) { f->SetModeToApproximateGlobal(); });
+  for (const FilterRun* run : { &quintic, &variable })
+  {
+    EXPECT_EQ(CountMessages(run->Warnings, { "interpolated, not approximated", "open lines only" }), 1)
+      << Joined(run->Warnings);
+    // Through the data: 20 spans of 10 samples (the seam once), the knots on the circle.
+    EXPECT_EQ(run->Output->GetNumberOfPoints(), 20 * 10);
+    EXPECT_NEAR(Norm(PointOf(run->Output, 10)), 1.0, 1e-12);
+  }
+  const FilterRun interpolating = RunFilter<Quintic>(input);
+  EXPECT_TRUE(interpolating.Warnings.empty()) << Joined(interpolating.Warnings);
 }
 
 TEST(VariableDegreeSplineFilter, SettingsTheAutomaticModeCannotUseAreReported)
