@@ -3,9 +3,12 @@
 #include "SparseSolve.h"
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -807,6 +810,99 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count)
   return knots;
 }
 
+namespace
+{
+/// The six quintic B-splines on uniform integer knots that are nonzero on
+/// [0, 1], at t there (Cox-de Boor, Piegl and Tiller's algorithm A2.2).
+std::array<double, 6> uniformQuinticBasis(double t)
+{
+  std::array<double, 6> basis{ 1.0 };
+  for (int degree = 1; degree <= 5; ++degree)
+  {
+    double saved = 0.0;
+    for (int r = 0; r < degree; ++r)
+    {
+      // Knots at integers: left_j = t + j - 1, right_j = j - t, and their sum is degree.
+      const double right = (r + 1) - t;
+      const double left = t + (degree - r) - 1;
+      const double scaled = basis[r] / degree;
+      basis[r] = saved + right * scaled;
+      saved = left * scaled;
+    }
+    basis[degree] = saved;
+  }
+  return basis;
+}
+
+/**
+ * The residual sum of squares of the least-squares quintic spline (C4, knots
+ * uniform from u's first to its last value, n + 5 B-splines on n spans) of
+ * points at u, or infinity when its normal equations are singular (a span
+ * without points). The space of the classical quintic spline on those knots
+ * (gamma = lambda = 1), built directly: banded normal equations of the
+ * uniform B-splines, no knot system to solve and no curve to invert.
+ */
+double uniformQuinticResidual(const std::vector<Vec3>& points, const std::vector<double>& u, int knots)
+{
+  const int spans = knots - 1;
+  const int unknowns = spans + 5;
+  const double h = (u.back() - u.front()) / spans;
+  auto locate = [&](double x, int& span) {
+    const double local = (x - u.front()) / h;
+    span = std::clamp(static_cast<int>(local), 0, spans - 1);
+    return uniformQuinticBasis(local - span);
+  };
+  // Upper band of the normal matrix, row-major by unknown: band(i, d) = (B^T B)(i, i + d).
+  Eigen::Matrix<double, Eigen::Dynamic, 6> band = Eigen::Matrix<double, Eigen::Dynamic, 6>::Zero(unknowns, 6);
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    int span = 0;
+    const std::array<double, 6> b = locate(u[j], span);
+    for (int a = 0; a < 6; ++a)
+    {
+      for (int c = a; c < 6; ++c)
+      {
+        band(span + a, c - a) += b[a] * b[c];
+      }
+      rhs.row(span + a) += b[a] * points[j].transpose();
+    }
+  }
+  Triplets entries;
+  for (int i = 0; i < unknowns; ++i)
+  {
+    for (int d = 0; d < 6 && i + d < unknowns; ++d)
+    {
+      entries.emplace_back(i + d, i, band(i, d)); // the lower triangle, as SimplicialLDLT reads it
+    }
+  }
+  Eigen::SparseMatrix<double> normal(unknowns, unknowns);
+  normal.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+    solver(normal);
+  const Eigen::VectorXd pivots = solver.vectorD();
+  // Pivots at rounding level of the largest: a span without points, or as good as.
+  if (solver.info() != Eigen::Success || pivots.minCoeff() <= 1e-12 * pivots.maxCoeff())
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const Eigen::MatrixX3d coefficients = solver.solve(rhs);
+  double rss = 0.0;
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    int span = 0;
+    const std::array<double, 6> b = locate(u[j], span);
+    Vec3 fitted = Vec3::Zero();
+    for (int a = 0; a < 6; ++a)
+    {
+      fitted += b[a] * coefficients.row(span + a).transpose();
+    }
+    rss += (fitted - points[j]).squaredNorm();
+  }
+  return rss;
+}
+} // namespace
+
 int crossValidatedKnotCount(
   const std::vector<Vec3>& points, const std::vector<double>& u, int highest)
 {
@@ -822,28 +918,17 @@ int crossValidatedKnotCount(
     const double freedom = count - (knots + 4); // the n + 5 de Boor points of n spans
     if (freedom > 0)
     {
-      try
-      {
-        const TensionQuinticSpline curve = TensionQuinticSpline::approximate(points, u,
-          uniformKnots(u, knots), QuinticParameters::uniform(QuinticContinuity::C4, knots, 1.0, 1.0));
-        double rss = 0.0;
-        for (size_t j = 0; j < points.size(); ++j)
-        {
-          rss += (curve.evaluate(u[j], 0)[0] - points[j]).squaredNorm();
-        }
-        gcv = count * rss / (freedom * freedom);
-      }
-      catch (const std::exception&)
-      {
-        // A singular candidate is not chosen; the others decide.
-      }
+      gcv = count * uniformQuinticResidual(points, u, knots) / (freedom * freedom);
     }
     return scores[knots] = gcv;
   };
+  // Every count up to 64 (GCV is bumpy there: on a noisy 80-point line 14
+  // knots scored 6% above 19, with 15-18 between); beyond, 15% steps.
+  constexpr int EveryCountUpTo = 64;
   constexpr double GridGrowth = 1.15;
   std::vector<int> grid;
   for (int knots = 2; knots <= highest;
-       knots = std::max(knots + 1, static_cast<int>(knots * GridGrowth)))
+       knots = knots < EveryCountUpTo ? knots + 1 : static_cast<int>(knots * GridGrowth))
   {
     grid.push_back(knots);
   }

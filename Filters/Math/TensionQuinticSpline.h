@@ -151,10 +151,12 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count);
  * K): K minimises N RSS(K) / (N - K - 4)^2 over the N points, the K + 4 de
  * Boor points being the unknowns per coordinate. Too few knots leave a bias,
  * too many fit the noise; the count whose fit best predicts left-out points
- * balances the two without knowing the noise. Searched on a grid growing 15%
- * a step, then refined between the best point's neighbours (about
- * 2 log(highest) / log(1.15) fits of O(N) each). A candidate whose system is
- * singular is not chosen; with none possible, 2. Both approximating families
+ * balances the two without knowing the noise. Every count up to 64, then a
+ * grid growing 15% a step, refined between the best point's neighbours; each
+ * fit is O(N) (the uniform quintic B-splines' banded normal equations, the
+ * same space as the classical quintic's). A candidate whose system is
+ * singular (a span without points) is not chosen; with none possible, 2. Both
+ * approximating families
  * use it: the variable degree family's clamped ends would make the end
  * spans' residual ask for ever more knots.
  */
