@@ -69,6 +69,58 @@ std::array<T, MaxDerivativeOrder + 1> bezierDerivatives(
   return out;
 }
 
+/// The power-form coefficients a_k (p(u) = sum a_k u^k) of the Bezier curve
+/// with points b on [0, 1]: a_k = C(n, k) sum_i (-1)^(k-i) C(k, i) b_i, the
+/// forward differences the de Casteljau derivatives use.
+template <typename T, size_t Points>
+std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  std::array<T, Points> a = b;
+  // Forward differences in place: a[k] becomes the k-th difference of b at 0.
+  for (int level = 1; level <= degree; ++level)
+  {
+    for (int j = degree; j >= level; --j)
+    {
+      a[j] = a[j] - a[j - 1];
+    }
+  }
+  double binomial = 1.0; // C(degree, k)
+  for (int k = 1; k <= degree; ++k)
+  {
+    binomial = binomial * (degree - k + 1) / k;
+    a[k] = binomial * a[k];
+  }
+  return a;
+}
+
+/**
+ * Derivatives 0..order of the polynomial sum a_k u^k (a from bezierToPower)
+ * at u, by repeated Horner steps (a Taylor shift: after step r, a[r] holds
+ * p^(r)(u) / r!). Fewer operations than a de Casteljau pass for the curves
+ * that evaluate the same span many times. Orders above the degree, or above
+ * MaxDerivativeOrder, are left zero.
+ */
+template <typename T, size_t Points>
+std::array<T, MaxDerivativeOrder + 1> powerDerivatives(
+  std::array<T, Points> a, double u, int order, const T& zero)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  std::array<T, MaxDerivativeOrder + 1> out;
+  out.fill(zero);
+  double factorial = 1.0;
+  for (int r = 0; r <= std::min({ order, degree, MaxDerivativeOrder }); ++r)
+  {
+    for (int k = degree - 1; k >= r; --k)
+    {
+      a[k] = a[k] + u * a[k + 1];
+    }
+    factorial *= r > 0 ? r : 1;
+    out[r] = factorial * a[r];
+  }
+  return out;
+}
+
 /**
  * A piecewise curve s(t) on knots t_0 < t_1 < ... < t_n (n spans). Families
  * implement evaluateOnSpan(); everything else (span search, sampling, frames,

@@ -474,8 +474,12 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
   spline.Parameters = parameters;
   spline.Xi = xi;
   spline.Points = points;
+  for (int i = 0; i < n; ++i)
+  {
+    spline.XPower.push_back(bezierToPower(xBezier[i]));
+    spline.CPower.push_back(bezierToPower(cBezier[i]));
+  }
   spline.XBezier = std::move(xBezier);
-  spline.CBezier = std::move(cBezier);
   return spline;
 }
 
@@ -694,8 +698,8 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
 std::pair<std::array<double, 5>, Derivatives> TensionQuinticSpline::parametricDerivatives(
   int span, double tau, int order) const
 {
-  const auto x = bezierDerivatives(this->XBezier[span], tau, order, 0.0);
-  const auto c = bezierDerivatives(this->CBezier[span], tau, order, Vec3(Vec3::Zero()));
+  const auto x = powerDerivatives(this->XPower[span], tau, order, 0.0);
+  const auto c = powerDerivatives(this->CPower[span], tau, order, Vec3(Vec3::Zero()));
   return { x, c };
 }
 
@@ -723,7 +727,7 @@ double TensionQuinticSpline::localParameter(int span, double x) const
   double lo = 0.0, hi = 1.0;
   for (int iteration = 0; iteration < 200; ++iteration)
   {
-    const auto d = bezierDerivatives(xb, u, 1, 0.0); // X and X', one de Casteljau pass
+    const auto d = powerDerivatives(this->XPower[span], u, 1, 0.0); // X and X'
     const double f = d[0] - x;
     if (f == 0.0)
     {

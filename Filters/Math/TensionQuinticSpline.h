@@ -136,9 +136,12 @@ private:
   std::vector<double> Xi;
   std::vector<Vec3> Points;
   int Recoveries = 0;
-  /// Per span: the Bezier ordinates of X and of C in the local parameter.
+  /// Per span: the Bezier ordinates of X in the local parameter (X's range
+  /// and Newton's first guess), and X and C in powers of it (bezierToPower:
+  /// faster to evaluate than de Casteljau, and each sample evaluates X several times).
   std::vector<std::array<double, 6>> XBezier;
-  std::vector<std::array<Vec3, 6>> CBezier;
+  std::vector<std::array<double, 6>> XPower;
+  std::vector<std::array<Vec3, 6>> CPower;
 };
 /// count >= 2 knots spread uniformly over the data parameters u, ending
 /// exactly at u's ends: the knots of the least-squares approximations.
