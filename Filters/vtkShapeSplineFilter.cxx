@@ -358,9 +358,8 @@ int vtkShapeSplineFilter::RequestData(
     }
     if (this->Approximates() && fit.Spline && fit.interpolates())
     {
-      vtkWarningMacro("Line (cell " << line.CellId << ") interpolated, not approximated: "
-                                    << (fit.Data.Closed ? "the approximation takes open lines only."
-                                                        : "too few points for an approximation."));
+      vtkWarningMacro("Line (cell " << line.CellId
+                                    << ") interpolated, not approximated: too few points for an approximation.");
     }
     if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
     {

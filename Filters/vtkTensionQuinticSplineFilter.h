@@ -22,8 +22,9 @@
  * (and MinLambda) report the parameters used, per span the smaller of its
  * two knots'.
  *
- * Mode APPROXIMATE (open lines with at least six points; others are
- * interpolated) fits the spline with NumberOfKnots knots, uniform in the
+ * Mode APPROXIMATE (lines with at least six points, open or closed; shorter
+ * ones are interpolated with a warning) fits the spline with NumberOfKnots
+ * knots (0: chosen by cross-validation), uniform in the
  * parameterization, in least squares (paper 000, section 5); its shape
  * reference is L*, the least-squares polygon on the same knots, and the
  * automatic mode keeps the sign of L*'s discrete torsion on every span.

@@ -16,8 +16,9 @@
  * AutomaticDegrees on (default) the degrees start at Degree and are raised
  * only at the knots of spans where the shape audit (paper 001, Definition 1)
  * fails, until none fails or MaxDegree is reached. The APPROXIMATE modes
- * (open lines with at least 2 NumberOfKnots points; others are interpolated)
- * fit NumberOfKnots knots uniform in the parameter in least squares and keep
+ * (lines with at least four points, six when closed; shorter ones are
+ * interpolated with a warning) fit NumberOfKnots knots (0: chosen by
+ * cross-validation) uniform in the parameter in least squares and keep
  * the shape of psi, the best piecewise linear least-squares fit: GLOBAL
  * raises every degree together, LOCAL raises degrees and pulls the curve
  * towards psi (weighted least squares) only at failing spans.

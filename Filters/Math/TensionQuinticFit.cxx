@@ -39,14 +39,15 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
 } // namespace
 
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
-  const std::vector<double>& u, int numberOfKnots, const QuinticFitOptions& quintic,
+  const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
   const FitOptions& fit, double coordinateNoise)
 {
   QuinticApproximation result;
-  result.Knots = uniformKnots(u, numberOfKnots);
-  result.Polygon = leastSquaresPolygon(points, u, result.Knots);
+  result.Knots = uniformKnots(u, closed ? numberOfKnots + 1 : numberOfKnots);
+  result.Polygon = leastSquaresPolygon(points, u, result.Knots, closed);
   CleanPolyline reference;
   reference.Points = result.Polygon;
+  reference.Closed = closed;
   const DiscreteShape shape = discreteShape(reference, fit.Tolerances);
   constexpr unsigned torsion = (1u << static_cast<int>(ShapeCriterion::TorsionSignAtKnot)) |
     (1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan));
@@ -55,7 +56,7 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
   for (int round = 0;; ++round)
   {
     result.Spline = std::make_unique<TensionQuinticSpline>(
-      TensionQuinticSpline::approximate(points, u, result.Knots, parameters));
+      TensionQuinticSpline::approximate(points, u, result.Knots, parameters, closed));
     const ShapeAudit audit = auditCurve(
       *result.Spline, reference, shape, fit.Tolerances, fit.AuditSubdivisions, coordinateNoise);
     result.TorsionSignViolations =
@@ -63,7 +64,7 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
       audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignOnSpan)];
     parameters = result.Spline->parameters();
     if (!quintic.Automatic || result.TorsionSignViolations == 0 || round == quintic.MaxRounds ||
-      !lowerQuinticTension(parameters, failingSpans(audit, torsion), false, quintic.Floor))
+      !lowerQuinticTension(parameters, failingSpans(audit, torsion), closed, quintic.Floor))
     {
       return result;
     }
@@ -77,24 +78,28 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     // At least two points per knot, as the variable degree family: with more
     // knots the least squares fit the noise (measured on a noisy helix of 49
     // points: 37 knots give curvature 7.5 for 0.4, 45 a condition of 8e18);
-    // and the n + 5 de Boor points of n spans need n + 5 points.
-    const int highest = std::min(count / 2, count - 4);
+    // and the n + 5 de Boor points of n spans need n + 5 points. A closed
+    // curve needs three distinct knots (its n spans have n de Boor points).
+    const bool closed = context.Data.Closed;
+    const int lowest = closed ? 3 : 2;
+    const int highest = closed ? count / 2 : std::min(count / 2, count - 4);
     const bool knotsGiven = quintic.ApproximationKnots >= 2 || quintic.ApproximationKnots == CrossValidatedKnots;
-    if (!knotsGiven || context.Data.Closed || highest < 2)
+    if (!knotsGiven || highest < lowest)
     {
       return interpolate(context, quintic);
     }
     const std::vector<Vec3>& points = context.Data.Points;
     const std::vector<double>& u = context.Knots;
     const int knots = quintic.ApproximationKnots != CrossValidatedKnots
-      ? std::min(quintic.ApproximationKnots, highest)
-      : crossValidatedKnotCount(points, u, highest);
+      ? std::clamp(quintic.ApproximationKnots, lowest, highest)
+      : crossValidatedKnotCount(points, u, highest, closed);
     QuinticApproximation approximation = approximateKeepingTorsionSigns(
-      points, u, knots, quintic, context.Options, context.CoordinateNoise);
+      points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
     BuiltCurve built;
     built.Spline = std::move(approximation.Spline);
     CleanPolyline reference;
     reference.Points = std::move(approximation.Polygon);
+    reference.Closed = closed;
     built.ShapeReference = std::move(reference);
     return built;
   };

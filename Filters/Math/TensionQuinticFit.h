@@ -18,9 +18,10 @@ struct QuinticFitOptions
   double Lambda = 1.0;
   double Floor = QuinticTensionFloor;
   int MaxRounds = 64;
-  /// 0: interpolate. Otherwise approximate an open line in least squares with
-  /// this many knots (at least 2; at most half the points and points - 4; a
-  /// line too short for 2 knots is interpolated), or CrossValidatedKnots:
+  /// 0: interpolate. Otherwise approximate the line in least squares with
+  /// this many knots (at least 2, distinct ones of a closed line at least 3;
+  /// at most half the points, and points - 4 when open; a line too short is
+  /// interpolated), or CrossValidatedKnots:
   /// as many as generalized cross-validation chooses for the fixed
   /// parameters, keeping the torsion signs of L* (approximateKeepingTorsionSigns).
   int ApproximationKnots = 0;
@@ -33,8 +34,8 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic);
 struct QuinticApproximation
 {
   std::unique_ptr<TensionQuinticSpline> Spline;
-  std::vector<double> Knots;  ///< placed uniformly in the data parameter
-  std::vector<Vec3> Polygon;  ///< L*, one vertex per knot
+  std::vector<double> Knots;  ///< placed uniformly in the data parameter (closed: with the closing one)
+  std::vector<Vec3> Polygon;  ///< L*, one vertex per (distinct) knot
   int TorsionSignViolations = 0; ///< of the spline against L* (criteria iv.1, iv.2)
 };
 
@@ -43,10 +44,11 @@ struct QuinticApproximation
  * the data parameters u) closest in least squares to the points, whose torsion
  * keeps the sign of the discrete torsion of L*, the least-squares polygon on
  * the same knots. Automatic: the tension starts at 1 and is lowered
- * (lowerQuinticTension) on spans where the sign is wrong.
+ * (lowerQuinticTension) on spans where the sign is wrong. Closed: a closed
+ * curve with numberOfKnots distinct knots (>= 3), u with the closing parameter.
  */
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
-  const std::vector<double>& u, int numberOfKnots, const QuinticFitOptions& quintic,
+  const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
   const FitOptions& fit, double coordinateNoise = 0.0);
 } // namespace shapesplines
 

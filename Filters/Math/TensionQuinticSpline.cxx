@@ -753,20 +753,20 @@ double TensionQuinticSpline::localParameter(int span, double x) const
 
 TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots,
-  const QuinticParameters& parameters)
+  const QuinticParameters& parameters, bool closed)
 {
   const int n = static_cast<int>(knots.size()) - 1;
-  if (n < 1 || points.size() != u.size() || static_cast<int>(points.size()) < n + 5)
+  const int unknowns = closed ? n : n + 5;
+  if (n < (closed ? 3 : 1) || u.size() < points.size() || static_cast<int>(points.size()) < unknowns)
   {
     throw std::invalid_argument("tension quintic spline: too few points to approximate");
   }
-  const Abscissae abscissae = solveAbscissae(knots, parameters, false);
+  const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
   const std::vector<SpanWeights> weights =
-    spanWeights(lookup(knots, abscissae.Parameters, false));
+    spanWeights(lookup(knots, abscissae.Parameters, closed));
   // The same X with any de Boor points: it maps the data parameters to spans and t.
   const TensionQuinticSpline shape = fromControlPoints(
-    knots, abscissae.Xi, std::vector<Vec3>(n + 5, Vec3::Zero()), abscissae.Parameters, false);
-  const int unknowns = n + 5;
+    knots, abscissae.Xi, std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed);
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   for (size_t j = 0; j < points.size(); ++j)
@@ -780,13 +780,18 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
       bernstein[b] = binomial[b] * std::pow(tau, b) * std::pow(1.0 - tau, 5 - b);
     }
     const Eigen::Matrix<double, 1, 6> row = bernstein * weights[span];
+    int column[6]; // the span's de Boor points D_span-2..D_span+3 (wrapping when closed)
+    for (int m = 0; m < 6; ++m)
+    {
+      column[m] = storage(span - 2 + m, n, closed);
+    }
     for (int a = 0; a < 6; ++a)
     {
       for (int b = 0; b < 6; ++b)
       {
-        normal.emplace_back(span + a, span + b, row[a] * row[b]);
+        normal.emplace_back(column[a], column[b], row[a] * row[b]);
       }
-      rhs.row(span + a) += row[a] * points[j].transpose();
+      rhs.row(column[a]) += row[a] * points[j].transpose();
     }
   }
   double condition = 1.0;
@@ -797,7 +802,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, false);
+    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
@@ -846,18 +851,21 @@ std::array<double, 6> uniformQuinticBasis(double t)
  * (gamma = lambda = 1), built directly: banded normal equations of the
  * uniform B-splines, no knot system to solve and no curve to invert.
  */
-double uniformQuinticResidual(const std::vector<Vec3>& points, const std::vector<double>& u, int knots)
+double uniformQuinticResidual(
+  const std::vector<Vec3>& points, const std::vector<double>& u, int knots, bool closed)
 {
-  const int spans = knots - 1;
-  const int unknowns = spans + 5;
+  const int spans = closed ? knots : knots - 1;
+  // B-spline span + a (a = 0..5) is nonzero on span; a closed curve's wrap around.
+  const int unknowns = closed ? spans : spans + 5;
+  auto unknown = [&](int j) { return j % unknowns; };
   const double h = (u.back() - u.front()) / spans;
   auto locate = [&](double x, int& span) {
     const double local = (x - u.front()) / h;
     span = std::clamp(static_cast<int>(local), 0, spans - 1);
     return uniformQuinticBasis(local - span);
   };
-  // Upper band of the normal matrix, row-major by unknown: band(i, d) = (B^T B)(i, i + d).
-  Eigen::Matrix<double, Eigen::Dynamic, 6> band = Eigen::Matrix<double, Eigen::Dynamic, 6>::Zero(unknowns, 6);
+  // Upper band of the normal matrix by unwrapped index: band(i, d) = (B^T B)(i, i + d).
+  Eigen::Matrix<double, Eigen::Dynamic, 6> band = Eigen::Matrix<double, Eigen::Dynamic, 6>::Zero(spans + 5, 6);
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   for (size_t j = 0; j < points.size(); ++j)
   {
@@ -869,15 +877,23 @@ double uniformQuinticResidual(const std::vector<Vec3>& points, const std::vector
       {
         band(span + a, c - a) += b[a] * b[c];
       }
-      rhs.row(span + a) += b[a] * points[j].transpose();
+      rhs.row(unknown(span + a)) += b[a] * points[j].transpose();
     }
   }
-  Triplets entries;
-  for (int i = 0; i < unknowns; ++i)
+  Triplets entries; // the lower triangle, as SimplicialLDLT reads it; wrapped entries add up
+  for (int i = 0; i < spans + 5; ++i)
   {
-    for (int d = 0; d < 6 && i + d < unknowns; ++d)
+    for (int d = 0; d < 6 && i + d < spans + 5; ++d)
     {
-      entries.emplace_back(i + d, i, band(i, d)); // the lower triangle, as SimplicialLDLT reads it
+      const int row = unknown(i + d), column = unknown(i);
+      if (d > 0 && row == column)
+      {
+        entries.emplace_back(row, row, 2.0 * band(i, d)); // both (i, i + d) and (i + d, i)
+      }
+      else
+      {
+        entries.emplace_back(std::max(row, column), std::min(row, column), band(i, d));
+      }
     }
   }
   Eigen::SparseMatrix<double> normal(unknowns, unknowns);
@@ -899,7 +915,7 @@ double uniformQuinticResidual(const std::vector<Vec3>& points, const std::vector
     Vec3 fitted = Vec3::Zero();
     for (int a = 0; a < 6; ++a)
     {
-      fitted += b[a] * coefficients.row(span + a).transpose();
+      fitted += b[a] * coefficients.row(unknown(span + a)).transpose();
     }
     rss += (fitted - points[j]).squaredNorm();
   }
@@ -908,7 +924,7 @@ double uniformQuinticResidual(const std::vector<Vec3>& points, const std::vector
 } // namespace
 
 int crossValidatedKnotCount(
-  const std::vector<Vec3>& points, const std::vector<double>& u, int highest)
+  const std::vector<Vec3>& points, const std::vector<double>& u, int highest, bool closed)
 {
   const double count = static_cast<double>(points.size());
   std::map<int, double> scores;
@@ -919,10 +935,11 @@ int crossValidatedKnotCount(
       return known->second;
     }
     double gcv = std::numeric_limits<double>::infinity();
-    const double freedom = count - (knots + 4); // the n + 5 de Boor points of n spans
+    // The n + 5 de Boor points of n spans, n of a closed curve's n spans.
+    const double freedom = count - (closed ? knots : knots + 4);
     if (freedom > 0)
     {
-      gcv = count * uniformQuinticResidual(points, u, knots) / (freedom * freedom);
+      gcv = count * uniformQuinticResidual(points, u, knots, closed) / (freedom * freedom);
     }
     return scores[knots] = gcv;
   };
@@ -930,15 +947,16 @@ int crossValidatedKnotCount(
   // knots scored 6% above 19, with 15-18 between); beyond, 15% steps.
   constexpr int EveryCountUpTo = 64;
   constexpr double GridGrowth = 1.15;
+  const int lowest = closed ? 3 : 2;
   std::vector<int> grid;
-  for (int knots = 2; knots <= highest;
+  for (int knots = lowest; knots <= highest;
        knots = knots < EveryCountUpTo ? knots + 1 : static_cast<int>(knots * GridGrowth))
   {
     grid.push_back(knots);
   }
   if (grid.empty())
   {
-    return 2;
+    return lowest;
   }
   if (grid.back() != highest)
   {
@@ -975,25 +993,27 @@ int crossValidatedKnotCount(
 }
 
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
-  const std::vector<double>& u, const std::vector<double>& knots)
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed)
 {
-  const int k = static_cast<int>(knots.size());
+  const int spans = static_cast<int>(knots.size()) - 1;
+  const int k = closed ? spans : spans + 1; // a closed polygon's last vertex is its first
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(k, 3);
   for (size_t j = 0; j < points.size(); ++j)
   {
     const int span = std::clamp(
       static_cast<int>(std::upper_bound(knots.begin(), knots.end(), u[j]) - knots.begin()) - 1, 0,
-      k - 2);
+      spans - 1);
     const double w = (u[j] - knots[span]) / (knots[span + 1] - knots[span]);
     const double hat[2] = { 1.0 - w, w };
+    const int vertex[2] = { span, (span + 1) % k };
     for (int a = 0; a < 2; ++a)
     {
       for (int b = 0; b < 2; ++b)
       {
-        normal.emplace_back(span + a, span + b, hat[a] * hat[b]);
+        normal.emplace_back(vertex[a], vertex[b], hat[a] * hat[b]);
       }
-      rhs.row(span + a) += hat[a] * points[j].transpose();
+      rhs.row(vertex[a]) += hat[a] * points[j].transpose();
     }
   }
   const Eigen::MatrixX3d solution = solveSparse(k, normal, rhs);

@@ -104,13 +104,16 @@ public:
     const std::vector<double>& knots, const QuinticParameters& parameters, bool closed);
 
   /**
-   * The open spline with knots x_i = knots[i] (via (34)) closest in least
-   * squares to points at parameters u: sum_j |s(u_j) - points_j|^2 minimal
-   * (the normal equations are banded). Needs enough points on every span.
+   * The spline with knots x_i = knots[i] (via (34)) closest in least squares
+   * to points at parameters u: sum_j |s(u_j) - points_j|^2 minimal (the
+   * normal equations are banded, cyclic when closed). Needs enough points on
+   * every span. Closed: knots end with the closing one, parameters have one
+   * entry per distinct knot, and u may hold the closing parameter after the
+   * points'.
    */
   static TensionQuinticSpline approximate(const std::vector<Vec3>& points,
     const std::vector<double>& u, const std::vector<double>& knots,
-    const QuinticParameters& parameters);
+    const QuinticParameters& parameters, bool closed = false);
 
   Derivatives evaluateOnSpan(int span, double x, int order) const override;
 
@@ -149,10 +152,11 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count);
 
 /**
  * The knot count K in [2, highest] of a least-squares approximation of points
- * at parameters u (an open line), by generalized cross-validation (Craven and
- * Wahba, 1979) of the classical quintic spline (tension 1) on uniformKnots(u,
- * K): K minimises N RSS(K) / (N - K - 4)^2 over the N points, the K + 4 de
- * Boor points being the unknowns per coordinate. Too few knots leave a bias,
+ * at parameters u, by generalized cross-validation (Craven and Wahba, 1979)
+ * of the classical quintic spline (tension 1) on K uniform knots: K
+ * minimises N RSS(K) / (N - K - 4)^2 over the N points, the K + 4 de Boor
+ * points being the unknowns per coordinate. Closed: K in [3, highest]
+ * distinct knots, K unknowns, and u may hold the closing parameter. Too few knots leave a bias,
  * too many fit the noise; the count whose fit best predicts left-out points
  * balances the two without knowing the noise. Every count up to 64, then a
  * grid growing 15% a step, refined between the best point's neighbours; each
@@ -163,15 +167,16 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count);
  * use it: the variable degree family's clamped ends would make the end
  * spans' residual ask for ever more knots.
  */
-int crossValidatedKnotCount(
-  const std::vector<Vec3>& points, const std::vector<double>& u, int highest);
+int crossValidatedKnotCount(const std::vector<Vec3>& points, const std::vector<double>& u,
+  int highest, bool closed = false);
 
 /**
  * L*: the piecewise linear curve with vertices at knots closest in least
- * squares to points at parameters u (knots[0] <= u <= knots.back()).
+ * squares to points at parameters u (knots[0] <= u <= knots.back()); closed,
+ * one vertex per distinct knot (the last knot closes the polygon).
  */
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
-  const std::vector<double>& u, const std::vector<double>& knots);
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed = false);
 } // namespace shapesplines
 
 #endif

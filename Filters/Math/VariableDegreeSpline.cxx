@@ -366,27 +366,29 @@ VariableDegreeSpline VariableDegreeSpline::interpolate(const std::vector<Vec3>& 
 }
 
 VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& points,
-  const std::vector<double>& u, const std::vector<double>& knots,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed,
   const VariableDegreeParameters& parameters, const std::vector<double>& weights,
   const std::vector<Vec3>& anchors)
 {
   const int spans = static_cast<int>(knots.size()) - 1;
-  checkParameters(knots, false, parameters);
-  if (points.size() != u.size() || weights.size() != knots.size() ||
-    anchors.size() != knots.size() || static_cast<int>(points.size()) < spans + 1)
+  checkParameters(knots, closed, parameters);
+  const size_t knotCount = closed ? spans : spans + 1;
+  if (u.size() < points.size() || weights.size() != knotCount || anchors.size() != knotCount ||
+    points.size() < knotCount || (closed && spans < 3))
   {
     throw std::invalid_argument("variable degree spline: too few points to approximate, or a "
                                 "weight and an anchor missing for some knot");
   }
-  const Extension e(knots, false, parameters);
+  const Extension e(knots, closed, parameters);
   std::vector<std::array<Weights, 6>> nets(spans);
   for (int i = 0; i < spans; ++i)
   {
     nets[i] = spanWeights(e, i);
   }
-  // Clamped ends: D_-2 = D_-1 = D_0 and D_m+2 = D_m+1 = D_m, so the unknowns are D_0..D_m.
-  auto column = [&](int j) { return std::clamp(j, 0, spans); };
-  const int unknowns = spans + 1;
+  // Clamped ends: D_-2 = D_-1 = D_0 and D_m+2 = D_m+1 = D_m, so the unknowns
+  // are D_0..D_m; a closed curve's D_j wrap around.
+  auto column = [&](int j) { return closed ? ((j % spans) + spans) % spans : std::clamp(j, 0, spans); };
+  const int unknowns = static_cast<int>(knotCount);
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   auto addSquare = [&](const Weights& w, int span, double weight, const Vec3& target) {
@@ -409,7 +411,7 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
     addSquare(derivativeWeights(pseudoBernstein(e.degree(span), e.degree(span + 1), v), nets[span], 0),
       span, 1.0, points[j]);
   }
-  for (int i = 0; i <= spans; ++i)
+  for (int i = 0; i < unknowns; ++i)
   {
     if (weights[i] > 0.0)
     {
@@ -417,12 +419,11 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
       addSquare(nets[span][i == span ? 0 : 5], span, weights[i], anchors[i]);
     }
   }
-  VariableDegreeSpline spline(knots, false);
+  VariableDegreeSpline spline(knots, closed);
   spline.Parameters = parameters;
   const std::vector<Vec3> free =
     toPoints(solveSparse(unknowns, normal, rhs, &spline.ConditionEstimate));
-  spline.DeBoor.reserve(spans + 5);
-  for (int j = -2; j <= spans + 2; ++j)
+  for (int j = closed ? 0 : -2; j <= (closed ? spans - 1 : spans + 2); ++j)
   {
     spline.DeBoor.push_back(free[column(j)]);
   }
@@ -547,30 +548,34 @@ BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOption
 BuiltCurve approximateData(const FitContext& context, const VariableDegreeOptions& options,
   int knotCount, double startDegree)
 {
+  // knotCount knots, the distinct ones of a closed line (the closing knot repeats the first).
+  const bool closed = context.Data.Closed;
+  const int spans = closed ? knotCount : knotCount - 1;
   const std::vector<double>& u = context.Knots;
-  const std::vector<double> knots = uniformKnots(u, knotCount);
+  const std::vector<double> knots = uniformKnots(u, spans + 1);
   CleanPolyline psi;
-  psi.Points = leastSquaresPolygon(context.Data.Points, u, knots);
+  psi.Points = leastSquaresPolygon(context.Data.Points, u, knots, closed);
+  psi.Closed = closed;
   std::vector<double> degrees(knotCount, startDegree);
   std::vector<double> weights(knotCount, 0.0);
   const bool local = options.Mode == VariableDegreeMode::ApproximateLocal;
   // An anchor's first weight counts like the points of one span; it grows
   // 4x a round up to a million times that (then the curve all but passes through psi).
-  const double firstWeight = static_cast<double>(u.size()) / (knotCount - 1);
+  const double firstWeight = static_cast<double>(context.Data.Points.size()) / spans;
   auto build = [&]() -> std::unique_ptr<Curve> {
-    return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(
-      context.Data.Points, u, knots, parametersFor(degrees, options, false), weights, psi.Points));
+    return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(context.Data.Points,
+      u, knots, closed, parametersFor(degrees, options, false), weights, psi.Points));
   };
   auto tighten = [&](const std::vector<char>& failing) {
     if (!local)
     {
       // The global scheme: every degree together (Theorem 4), as if every span failed.
-      return raiseFailing(degrees, std::vector<char>(failing.size(), 1), false, options.MaxDegree);
+      return raiseFailing(degrees, std::vector<char>(failing.size(), 1), closed, options.MaxDegree);
     }
-    bool raised = raiseFailing(degrees, failing, false, options.MaxDegree);
+    bool raised = raiseFailing(degrees, failing, closed, options.MaxDegree);
     for (int j = 0; j < static_cast<int>(failing.size()); ++j)
     {
-      for (const int i : { j, j + 1 })
+      for (const int i : { j, (j + 1) % knotCount })
       {
         const double next = std::min(weights[i] == 0.0 ? firstWeight : 4.0 * weights[i], 1e6 * firstWeight);
         if (failing[j] && next > weights[i])
@@ -596,15 +601,17 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
     const double start = std::max(LowestVariableDegree, options.Degree);
     VariableDegreeOptions capped = options;
     capped.MaxDegree = std::max(start, options.MaxDegree);
+    // A closed curve needs three distinct knots.
+    const int lowest = context.Data.Closed ? 3 : 2;
     const int highest = count / 2;
     const bool knotsGiven = options.ApproximationKnots >= 2 || options.ApproximationKnots == CrossValidatedKnots;
-    if (options.Mode != VariableDegreeMode::Interpolate && !context.Data.Closed && highest >= 2 && knotsGiven)
+    if (options.Mode != VariableDegreeMode::Interpolate && highest >= lowest && knotsGiven)
     {
       const std::vector<Vec3>& points = context.Data.Points;
       const std::vector<double>& u = context.Knots;
       const int knots = options.ApproximationKnots != CrossValidatedKnots
-        ? std::min(options.ApproximationKnots, highest)
-        : crossValidatedKnotCount(points, u, highest);
+        ? std::clamp(options.ApproximationKnots, lowest, highest)
+        : crossValidatedKnotCount(points, u, highest, context.Data.Closed);
       return approximateData(context, capped, knots, start);
     }
     std::vector<double> degrees(count, start);

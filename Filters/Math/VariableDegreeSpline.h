@@ -75,12 +75,15 @@ public:
     VariableDegreeEnds ends = VariableDegreeEnds::Natural);
 
   /**
-   * Section 4.2: the open spline on knots closest in least squares to points
-   * at parameters u, plus weight_i |s(knot_i) - anchors_i|^2 per knot (the
-   * weighted local scheme; all weights 0 is the global one). Clamped ends.
+   * Section 4.2: the spline on knots closest in least squares to points at
+   * parameters u, plus weight_i |s(knot_i) - anchors_i|^2 per knot (the
+   * weighted local scheme; all weights 0 is the global one). Open: clamped
+   * ends, a weight and an anchor per knot. Closed: knots end with the closing
+   * one, a weight and an anchor per distinct knot, and u may hold the closing
+   * parameter after the points'.
    */
   static VariableDegreeSpline approximate(const std::vector<Vec3>& points,
-    const std::vector<double>& u, const std::vector<double>& knots,
+    const std::vector<double>& u, const std::vector<double>& knots, bool closed,
     const VariableDegreeParameters& parameters, const std::vector<double>& weights,
     const std::vector<Vec3>& anchors);
 

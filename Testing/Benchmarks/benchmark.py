@@ -186,12 +186,12 @@ def accuracy(turns=6, seed=2):
         for noise in (0.0, 0.001, 0.005, 0.01):
             for per_turn in (8, 16, 32, 64):
                 count = turns * per_turn
-                # The trefoil's period without its closing sample: a closed line would be
-                # interpolated (the approximations take open lines), and only the middle
-                # half is measured.
+                # The trefoil is a closed line: its last sample repeats its first, noise included.
                 samples = count + 1 if periods > 1 else count
                 t = 2 * np.pi * periods * np.arange(samples) / count
                 xyz = curve(t)[0] + rng.normal(scale=noise * 2.0, size=(samples, 3))
+                if periods == 1:
+                    xyz = np.vstack([xyz, xyz[:1]])
                 fits = [filter_geometry("CubicSpline", xyz),
                         filter_geometry("VariableDegreeSpline", xyz),
                         filter_geometry("VariableDegreeSpline", xyz, Mode="Approximate Local", NumberOfKnots=0,
@@ -203,7 +203,7 @@ def accuracy(turns=6, seed=2):
                 spline = vtkSplineFilter()
                 spline.SetInputData(to_polydata(xyz[None]))
                 spline.SetSubdivideToSpecified()
-                spline.SetNumberOfSubdivisions((samples - 1) * SUBDIVISIONS)
+                spline.SetNumberOfSubdivisions((len(xyz) - 1) * SUBDIVISIONS)
                 spline.Update()
                 dense_vtk = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
                 fits.append((dense_vtk, *finite_difference_geometry(dense_vtk)))

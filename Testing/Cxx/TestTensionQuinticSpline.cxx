@@ -548,9 +548,9 @@ TEST(TensionQuinticSpline, ApproximationKeepsTheTorsionSignsOfTheLeastSquaresPol
     CleanPolyline data;
     data.Points = points;
     const auto u = computeKnots(data, Parameterization::ChordLength);
-    const auto plain = approximateKeepingTorsionSigns(points, u, 9, quintic, fit);
+    const auto plain = approximateKeepingTorsionSigns(points, u, 9, false, quintic, fit);
     quintic.Automatic = true;
-    const auto automatic = approximateKeepingTorsionSigns(points, u, 9, quintic, fit);
+    const auto automatic = approximateKeepingTorsionSigns(points, u, 9, false, quintic, fit);
     const auto& p = automatic.Spline->parameters();
     std::printf("%s bean: torsion sign violations plain %d, automatic %d; smallest gamma %.3g lambda %.3g\n",
       continuity == QuinticContinuity::C3 ? "C3" : "C4", plain.TorsionSignViolations,
@@ -677,6 +677,76 @@ TEST(TensionQuinticSpline, CrossValidationFindsTheBestCountOfTheClassicalQuintic
     static_cast<int>(std::min_element(scores.begin(), scores.end()) - scores.begin()));
   EXPECT_GT(chosen, 64);
   EXPECT_LE(scores[chosen], 1.02 * best);
+}
+
+TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValidate)
+{
+  // A closed C4 quintic through 7 space points on uneven knots: least squares
+  // on its own knots from 90 of its points give it back.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Vec3> vertices;
+  std::vector<double> knots{ 0.0 };
+  for (int i = 0; i < 7; ++i)
+  {
+    const double a = 2.0 * test::Pi * i / 7;
+    vertices.emplace_back(std::cos(a) + jitter(rng), std::sin(a) + jitter(rng), 0.3 * std::sin(2 * a));
+    knots.push_back(knots.back() + 1.0 + 3.0 * jitter(rng));
+  }
+  const auto parameters = QuinticParameters::uniform(QuinticContinuity::C4, 7, 1.0, 1.0);
+  const auto truth = TensionQuinticSpline::interpolate(vertices, knots, parameters, true);
+  std::vector<double> u;
+  std::vector<Vec3> points;
+  for (int j = 0; j < 90; ++j)
+  {
+    u.push_back(knots.front() + (knots.back() - knots.front()) * (j + 0.5) / 90);
+    points.push_back(truth.evaluate(u.back(), 0)[0]);
+  }
+  const auto fit = TensionQuinticSpline::approximate(points, u, knots, parameters, true);
+  ASSERT_TRUE(fit.isClosed());
+  for (const double at : { knots[0], knots[3], 0.5 * (knots[6] + knots[7]), knots[7] })
+  {
+    const auto expected = truth.evaluate(at, 3);
+    const auto actual = fit.evaluate(at, 3);
+    for (int order = 0; order <= 3; ++order)
+    {
+      EXPECT_LT((actual[order] - expected[order]).norm(), 1e-8 * (1.0 + expected[order].norm()))
+        << "order " << order << " at " << at;
+    }
+  }
+  // Cross-validation of a closed line (cyclic normal equations) lands on the
+  // best count of a scan by the closed classical quintic's own least squares.
+  std::normal_distribution<double> noise(0.0, 0.01);
+  CleanPolyline data;
+  data.Closed = true;
+  for (int i = 0; i < 120; ++i)
+  {
+    const double t = 2.0 * test::Pi * i / 120;
+    data.Points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t) + noise(rng),
+      std::cos(t) - 2.0 * std::cos(2.0 * t) + noise(rng), -std::sin(3.0 * t) + noise(rng));
+  }
+  const auto v = computeKnots(data, Parameterization::Uniform);
+  int best = 0;
+  double bestScore = std::numeric_limits<double>::infinity();
+  for (int k = 3; k <= 40; ++k)
+  {
+    const auto curve = TensionQuinticSpline::approximate(data.Points, v, shapesplines::uniformKnots(v, k + 1),
+      QuinticParameters::uniform(QuinticContinuity::C4, k, 1.0, 1.0), true);
+    double rss = 0.0;
+    for (size_t j = 0; j < data.Points.size(); ++j)
+    {
+      rss += (curve.evaluate(v[j], 0)[0] - data.Points[j]).squaredNorm();
+    }
+    const double score = 120.0 * rss / ((120.0 - k) * (120.0 - k));
+    if (score < bestScore)
+    {
+      best = k;
+      bestScore = score;
+    }
+  }
+  const int chosen = crossValidatedKnotCount(data.Points, v, 40, true);
+  std::printf("noisy closed trefoil: cross-validation chose %d knots, the scan %d\n", chosen, best);
+  EXPECT_EQ(chosen, best);
 }
 
 TEST(TensionQuinticSpline, AutomaticModeRepairsClosedLines)

@@ -436,10 +436,44 @@ TEST(VariableDegreeSpline, ApproximationReproducesACurveOfItsSpace)
     points.push_back(truth.evaluate(u.back(), 0)[0]);
   }
   const auto fit = VariableDegreeSpline::approximate(
-    points, u, knots, p, std::vector<double>(knots.size(), 0.0), std::vector<Vec3>(knots.size()));
+    points, u, knots, false, p, std::vector<double>(knots.size(), 0.0), std::vector<Vec3>(knots.size()));
   for (size_t j = 0; j < deBoor.size(); ++j)
   {
     EXPECT_LT((fit.deBoorPoints()[j] - deBoor[j]).norm(), 1e-10) << j;
+  }
+}
+
+TEST(VariableDegreeSpline, ClosedApproximationReproducesAClosedCurveOfItsSpace)
+{
+  // A closed curve of degrees 5 to 12 through 7 space points: least squares
+  // on its own knots and degrees from 90 of its points give it back.
+  std::vector<Vec3> vertices;
+  std::vector<double> knots{ 0.0 };
+  std::vector<double> degrees;
+  for (int i = 0; i < 7; ++i)
+  {
+    const double a = 2.0 * test::Pi * i / 7;
+    vertices.emplace_back(std::cos(a), 1.2 * std::sin(a), 0.3 * std::sin(2 * a));
+    knots.push_back(knots.back() + 1.0 + 0.2 * std::sin(3.0 * i));
+    degrees.push_back(5.0 + i);
+  }
+  VariableDegreeParameters p = uniformParameters(7, 5.0);
+  p.Degree = degrees;
+  const auto truth = VariableDegreeSpline::interpolate(vertices, knots, true, p);
+  std::vector<double> u;
+  std::vector<Vec3> points;
+  for (int j = 0; j < 90; ++j)
+  {
+    u.push_back(knots.front() + (knots.back() - knots.front()) * (j + 0.5) / 90);
+    points.push_back(truth.evaluate(u.back(), 0)[0]);
+  }
+  const auto fit = VariableDegreeSpline::approximate(
+    points, u, knots, true, p, std::vector<double>(7, 0.0), std::vector<Vec3>(7));
+  ASSERT_TRUE(fit.isClosed());
+  ASSERT_EQ(fit.deBoorPoints().size(), truth.deBoorPoints().size());
+  for (size_t j = 0; j < truth.deBoorPoints().size(); ++j)
+  {
+    EXPECT_LT((fit.deBoorPoints()[j] - truth.deBoorPoints()[j]).norm(), 1e-10) << j;
   }
 }
 
@@ -473,7 +507,7 @@ TEST(VariableDegreeSpline, ApproximationTendsToPsiAsDegreesOrWeightsGrow)
   for (const double k : { 5.0, 20.0, 100.0, 1000.0 })
   {
     const auto s = VariableDegreeSpline::approximate(
-      points, u, knots, uniformParameters(knots.size(), k, std::pow(5.0 / k, 3)), none, psi);
+      points, u, knots, false, uniformParameters(knots.size(), k, std::pow(5.0 / k, 3)), none, psi);
     const double d = distanceToPsi(s);
     std::printf("global scheme, degree %g: distance to psi at the knots %.3g\n", k, d);
     EXPECT_LT(d, previous);
@@ -484,7 +518,7 @@ TEST(VariableDegreeSpline, ApproximationTendsToPsiAsDegreesOrWeightsGrow)
   std::vector<double> weights = none;
   weights[4] = 1e8;
   const auto s = VariableDegreeSpline::approximate(
-    points, u, knots, uniformParameters(knots.size(), 5.0), weights, psi);
+    points, u, knots, false, uniformParameters(knots.size(), 5.0), weights, psi);
   EXPECT_LT((s.evaluate(knots[4], 0)[0] - psi[4]).norm(), 1e-5);
   EXPECT_GT((s.evaluate(knots[2], 0)[0] - psi[2]).norm(), 1e-4);
 }
