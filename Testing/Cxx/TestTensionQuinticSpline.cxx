@@ -569,18 +569,58 @@ TEST(TensionQuinticSpline, ApproximationKeepsTheTorsionSignsOfTheLeastSquaresPol
   }
 }
 
+namespace
+{
+/// test::helix(perTurn, turns) with seeded Gaussian noise of deviation sigma.
+std::vector<Vec3> noisyHelix(int perTurn, int turns, double sigma, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Vec3> points = test::helix(perTurn, turns);
+  for (Vec3& p : points)
+  {
+    p += Vec3(noise(rng), noise(rng), noise(rng));
+  }
+  return points;
+}
+
+/// N RSS / (N - unknowns)^2 for every knot count up to highest (infinity
+/// below the lowest), by the classical quintic's own least squares (gamma =
+/// 1, the knot system and the X inversion included): what
+/// crossValidatedKnotCount minimises. Closed: counts of distinct knots.
+std::vector<double> crossValidationScores(
+  const std::vector<Vec3>& points, const std::vector<double>& u, int highest, bool closed)
+{
+  const double count = static_cast<double>(points.size());
+  std::vector<double> scores(highest + 1, std::numeric_limits<double>::infinity());
+  for (int knots = closed ? 3 : 2; knots <= highest; ++knots)
+  {
+    const auto curve = TensionQuinticSpline::approximate(points, u,
+      shapesplines::uniformKnots(u, closed ? knots + 1 : knots),
+      QuinticParameters::uniform(QuinticContinuity::C4, knots, 1.0, 1.0), closed);
+    double rss = 0.0;
+    for (size_t j = 0; j < points.size(); ++j)
+    {
+      rss += (curve.evaluate(u[j], 0)[0] - points[j]).squaredNorm();
+    }
+    const double freedom = count - (closed ? knots : knots + 4);
+    scores[knots] = count * rss / (freedom * freedom);
+  }
+  return scores;
+}
+
+int bestCount(const std::vector<double>& scores)
+{
+  return static_cast<int>(std::min_element(scores.begin(), scores.end()) - scores.begin());
+}
+} // namespace
+
 TEST(TensionQuinticSpline, CrossValidationChoosesKnotsThatKeepTheNoiseOutOfTheTorsion)
 {
   // Helix a = 2, b = 1 (torsion 0.2), 6 turns at 32 points per turn, Gaussian
   // noise of 0.5% of the radius (the benchmark's case): every knot the data
   // allow (96) follows the noise; cross-validation must choose fewer.
-  std::mt19937 rng(3);
-  std::normal_distribution<double> noise(0.0, 0.01);
-  std::vector<Vec3> points = test::helix(32, 6);
-  for (Vec3& p : points)
-  {
-    p += Vec3(noise(rng), noise(rng), noise(rng));
-  }
+  const std::vector<Vec3> points = noisyHelix(32, 6, 0.01, 3);
   FitOptions options;
   options.Knots = Parameterization::Uniform;
   // Median relative torsion error on the middle half, and the knots used.
@@ -625,58 +665,30 @@ TEST(TensionQuinticSpline, CrossValidationChoosesKnotsThatKeepTheNoiseOutOfTheTo
 
 TEST(TensionQuinticSpline, CrossValidationFindsTheBestCountOfTheClassicalQuinticLeastSquares)
 {
-  // Scores N RSS / (N - K - 4)^2 of every count by the classical quintic's own
-  // least squares (gamma = 1, the knot system and the X inversion included).
-  auto scan = [](const std::vector<Vec3>& points, const std::vector<double>& u, int highest) {
-    const double count = static_cast<double>(points.size());
-    std::vector<double> scores(highest + 1, std::numeric_limits<double>::infinity());
-    for (int knots = 2; knots <= highest; ++knots)
-    {
-      const auto curve = TensionQuinticSpline::approximate(points, u,
-        shapesplines::uniformKnots(u, knots), QuinticParameters::uniform(QuinticContinuity::C4, knots, 1.0, 1.0));
-      double rss = 0.0;
-      for (size_t j = 0; j < points.size(); ++j)
-      {
-        rss += (curve.evaluate(u[j], 0)[0] - points[j]).squaredNorm();
-      }
-      scores[knots] = count * rss / ((count - knots - 4) * (count - knots - 4));
-    }
-    return scores;
-  };
   // Up to 64 knots every count is tried: the search (on the uniform
-  // B-splines' residuals) must land on the scan's best.
+  // B-splines' residuals) must land on the best of the classical quintic's scan.
   for (const unsigned seed : { 7u, 8u, 9u })
   {
     const auto points = perturbedBean(80, 0.01, seed);
     CleanPolyline data;
     data.Points = points;
     const auto u = computeKnots(data, Parameterization::ChordLength);
-    const auto scores = scan(points, u, 40);
-    const int best = static_cast<int>(std::min_element(scores.begin(), scores.end()) - scores.begin());
+    const int best = bestCount(crossValidationScores(points, u, 40, false));
     const int chosen = crossValidatedKnotCount(points, u, 40);
     std::printf("noisy bean (seed %u): cross-validation chose %d knots, the scan of every count %d\n",
       seed, chosen, best);
     EXPECT_EQ(chosen, best);
   }
   // Beyond, the 15% grid and its refinement: within 2% of the best score.
-  std::mt19937 rng(4);
-  std::normal_distribution<double> noise(0.0, 0.002);
-  std::vector<Vec3> points = test::helix(64, 12);
-  for (Vec3& p : points)
-  {
-    p += Vec3(noise(rng), noise(rng), noise(rng));
-  }
   CleanPolyline data;
-  data.Points = points;
+  data.Points = noisyHelix(64, 12, 0.002, 4);
   const auto u = computeKnots(data, Parameterization::Uniform);
-  const auto scores = scan(points, u, 300);
-  const double best = *std::min_element(scores.begin(), scores.end());
-  const int chosen = crossValidatedKnotCount(points, u, 300);
+  const auto scores = crossValidationScores(data.Points, u, 300, false);
+  const int chosen = crossValidatedKnotCount(data.Points, u, 300);
   std::printf("noisy helix, 769 points: cross-validation chose %d knots, score %.4g of the best %.4g (%d)\n",
-    chosen, scores[chosen], best,
-    static_cast<int>(std::min_element(scores.begin(), scores.end()) - scores.begin()));
+    chosen, scores[chosen], scores[bestCount(scores)], bestCount(scores));
   EXPECT_GT(chosen, 64);
-  EXPECT_LE(scores[chosen], 1.02 * best);
+  EXPECT_LE(scores[chosen], 1.02 * scores[bestCount(scores)]);
 }
 
 TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValidate)
@@ -726,24 +738,7 @@ TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValid
       std::cos(t) - 2.0 * std::cos(2.0 * t) + noise(rng), -std::sin(3.0 * t) + noise(rng));
   }
   const auto v = computeKnots(data, Parameterization::Uniform);
-  int best = 0;
-  double bestScore = std::numeric_limits<double>::infinity();
-  for (int k = 3; k <= 40; ++k)
-  {
-    const auto curve = TensionQuinticSpline::approximate(data.Points, v, shapesplines::uniformKnots(v, k + 1),
-      QuinticParameters::uniform(QuinticContinuity::C4, k, 1.0, 1.0), true);
-    double rss = 0.0;
-    for (size_t j = 0; j < data.Points.size(); ++j)
-    {
-      rss += (curve.evaluate(v[j], 0)[0] - data.Points[j]).squaredNorm();
-    }
-    const double score = 120.0 * rss / ((120.0 - k) * (120.0 - k));
-    if (score < bestScore)
-    {
-      best = k;
-      bestScore = score;
-    }
-  }
+  const int best = bestCount(crossValidationScores(data.Points, v, 40, true));
   const int chosen = crossValidatedKnotCount(data.Points, v, 40, true);
   std::printf("noisy closed trefoil: cross-validation chose %d knots, the scan %d\n", chosen, best);
   EXPECT_EQ(chosen, best);
