@@ -85,11 +85,12 @@ public:
 
   ///@{
   /**
-   * Knots of the approximation: 0 (default) lets generalized cross-validation
-   * choose them per line from the data, balancing bias against noise (Craven
-   * and Wahba); otherwise this many (1 counts as 2). Either way at
-   * most half the points and points - 4 (lines of fewer than 6 points are
-   * interpolated).
+   * Knots of the approximation (default 9; 1 counts as 2), or 0: generalized
+   * cross-validation chooses them per line from the data, balancing bias
+   * against noise (Craven and Wahba). Either way at most half the points and
+   * points - 4 (lines of fewer than 6 points are interpolated). The default
+   * stays 9: on unevenly spaced points this family's least squares with many
+   * knots can leave the data (README, Decisions).
    */
   vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);
   vtkGetMacro(NumberOfKnots, int);
@@ -137,7 +138,7 @@ protected:
 
   int Continuity = C4;
   int Mode = INTERPOLATE;
-  int NumberOfKnots = 0;
+  int NumberOfKnots = 9;
   bool Automatic = true;
   double Gamma = 1.0;
   double Lambda = 1.0;

@@ -90,8 +90,9 @@ Options of fit:
   --mode M               quintic, qqr: interpolate (default) or approximate;
                          vdps: interpolate (default), approximate (the local
                          scheme), approximate-global or approximate-local
-  --knots N              approximate: number of knots, at most half the points
-                         (default 0: chosen per line by cross-validation)
+  --knots N              approximate: number of knots, at most half the points;
+                         0 chooses per line by cross-validation (the vdps
+                         default; the quintic's is 9)
   --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1);
                          vdps: --lambda is the corner cutting tension (1)
   --degree K             vdps: starting (fixed with --fixed) degree (default 5)
@@ -676,7 +677,7 @@ std::map<std::string, FamilyFactory> Families()
        }
        filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
                                              : vtkTensionQuinticSplineFilter::INTERPOLATE);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 9, 0, 1e6)));
        filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
        filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));

@@ -143,6 +143,32 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 /// (crossValidatedKnotCount in TensionQuinticSpline.h).
 constexpr int CrossValidatedKnots = -1;
 
+/**
+ * fit(knots), and while it throws (a singular system: a gap in the data
+ * leaves a span without points where the family's knots differ from those
+ * cross-validation checked), fit with 10% fewer knots, down to lowest, where
+ * the failure is rethrown. For knot counts we choose; a user's count fails
+ * as asked.
+ */
+template <class Fit>
+auto fitWithFewerKnotsIfSingular(int knots, int lowest, const Fit& fit) -> decltype(fit(knots))
+{
+  for (;; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
+  {
+    try
+    {
+      return fit(knots);
+    }
+    catch (const std::exception&)
+    {
+      if (knots <= lowest)
+      {
+        throw;
+      }
+    }
+  }
+}
+
 /// Coordinates beyond this are refused: a curve through them (its overshoot,
 /// its arc length) can leave the double range.
 constexpr double LargestCoordinate = 1e300;

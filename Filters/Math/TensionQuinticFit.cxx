@@ -90,11 +90,13 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     }
     const std::vector<Vec3>& points = context.Data.Points;
     const std::vector<double>& u = context.Knots;
-    const int knots = quintic.ApproximationKnots != CrossValidatedKnots
-      ? std::clamp(quintic.ApproximationKnots, lowest, highest)
-      : crossValidatedKnotCount(points, u, highest, closed);
-    QuinticApproximation approximation = approximateKeepingTorsionSigns(
-      points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
+    auto approximate = [&](int knots) {
+      return approximateKeepingTorsionSigns(
+        points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
+    };
+    QuinticApproximation approximation = quintic.ApproximationKnots != CrossValidatedKnots
+      ? approximate(std::clamp(quintic.ApproximationKnots, lowest, highest))
+      : fitWithFewerKnotsIfSingular(crossValidatedKnotCount(points, u, highest, closed), lowest, approximate);
     BuiltCurve built;
     built.Spline = std::move(approximation.Spline);
     CleanPolyline reference;

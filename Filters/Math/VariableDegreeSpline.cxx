@@ -609,10 +609,11 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
     {
       const std::vector<Vec3>& points = context.Data.Points;
       const std::vector<double>& u = context.Knots;
-      const int knots = options.ApproximationKnots != CrossValidatedKnots
-        ? std::clamp(options.ApproximationKnots, lowest, highest)
-        : crossValidatedKnotCount(points, u, highest, context.Data.Closed);
-      return approximateData(context, capped, knots, start);
+      auto approximate = [&](int knots) { return approximateData(context, capped, knots, start); };
+      return options.ApproximationKnots != CrossValidatedKnots
+        ? approximate(std::clamp(options.ApproximationKnots, lowest, highest))
+        : fitWithFewerKnotsIfSingular(
+            crossValidatedKnotCount(points, u, highest, context.Data.Closed), lowest, approximate);
     }
     std::vector<double> degrees(count, start);
     const auto& given = context.PointValues;
