@@ -691,6 +691,26 @@ TEST(TensionQuinticSpline, CrossValidationFindsTheBestCountOfTheClassicalQuintic
   EXPECT_LE(scores[chosen], 1.02 * scores[bestCount(scores)]);
 }
 
+TEST(TensionQuinticSpline, CrossValidationLeavesNoSpanWithoutPoints)
+{
+  // Two noisy clusters of 50 points, at parameters [0, 1] and [9, 10]: with
+  // 4 or more uniform knots a span falls in the gap. Noise alone would ask
+  // for more knots; no candidate may leave a span empty.
+  std::mt19937 rng(21);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::vector<Vec3> points;
+  std::vector<double> u;
+  for (int j = 0; j < 100; ++j)
+  {
+    u.push_back(j < 50 ? j / 49.0 : 9.0 + (j - 50) / 49.0);
+    points.emplace_back(std::cos(u.back()) + noise(rng), std::sin(u.back()) + noise(rng), noise(rng));
+  }
+  const int chosen = crossValidatedKnotCount(points, u, 50);
+  std::printf("two clusters: cross-validation chose %d knots\n", chosen);
+  EXPECT_GE(chosen, 2);
+  EXPECT_LE(chosen, 3);
+}
+
 TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValidate)
 {
   // A closed C4 quintic through 7 space points on uneven knots: least squares
