@@ -159,6 +159,10 @@ auto fitWithFewerKnotsIfSingular(int knots, int lowest, const Fit& fit) -> declt
     {
       return fit(knots);
     }
+    catch (const FitAborted&)
+    {
+      throw; // the user stopped the work: no retry
+    }
     catch (const std::exception&)
     {
       if (knots <= lowest)
