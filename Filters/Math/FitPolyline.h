@@ -143,17 +143,36 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 /// (crossValidatedKnotCount in TensionQuinticSpline.h).
 constexpr int CrossValidatedKnots = -1;
 
-/**
- * fit(knots), and while it throws (a singular system: a gap in the data
- * leaves a span without points where the family's knots differ from those
- * cross-validation checked), fit with 10% fewer knots, down to lowest, where
- * the failure is rethrown. For knot counts we choose; a user's count fails
- * as asked.
- */
-template <class Fit>
-auto fitWithFewerKnotsIfSingular(int knots, int lowest, const Fit& fit) -> decltype(fit(knots))
+/// The fewest knots an approximation takes: 2, or 3 distinct ones when closed.
+inline int lowestKnotCount(bool closed)
 {
-  for (;; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
+  return closed ? 3 : 2;
+}
+
+/**
+ * An approximating family's fit(knots) for the count asked: requested,
+ * clamped to [lowestKnotCount(closed), highest]; or, for CrossValidatedKnots,
+ * crossValidated()'s count, and 10% fewer while fit throws (a singular
+ * system: a gap in the data leaves a span without points where the family's
+ * knots differ from those cross-validation checked), down to the lowest,
+ * where the failure is rethrown. A user's count fails as asked. Nothing when
+ * the line cannot be approximated (a request below 2 that is not
+ * CrossValidatedKnots, or highest below the lowest): the family interpolates.
+ */
+template <class Fit, class CrossValidate>
+auto fitWithKnotCount(int requested, bool closed, int highest, const CrossValidate& crossValidated,
+  const Fit& fit) -> std::optional<decltype(fit(highest))>
+{
+  const int lowest = lowestKnotCount(closed);
+  if ((requested < 2 && requested != CrossValidatedKnots) || highest < lowest)
+  {
+    return std::nullopt;
+  }
+  if (requested != CrossValidatedKnots)
+  {
+    return fit(std::clamp(requested, lowest, highest));
+  }
+  for (int knots = crossValidated();; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
   {
     try
     {

@@ -81,26 +81,24 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     // and the n + 5 de Boor points of n spans need n + 5 points. A closed
     // curve needs three distinct knots (its n spans have n de Boor points).
     const bool closed = context.Data.Closed;
-    const int lowest = closed ? 3 : 2;
     const int highest = closed ? count / 2 : std::min(count / 2, count - 4);
-    const bool knotsGiven = quintic.ApproximationKnots >= 2 || quintic.ApproximationKnots == CrossValidatedKnots;
-    if (!knotsGiven || highest < lowest)
+    const std::vector<Vec3>& points = context.Data.Points;
+    const std::vector<double>& u = context.Knots;
+    std::optional<QuinticApproximation> approximation = fitWithKnotCount(
+      quintic.ApproximationKnots, closed, highest,
+      [&] { return crossValidatedKnotCount(points, u, highest, closed); },
+      [&](int knots) {
+        return approximateKeepingTorsionSigns(
+          points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
+      });
+    if (!approximation)
     {
       return interpolate(context, quintic);
     }
-    const std::vector<Vec3>& points = context.Data.Points;
-    const std::vector<double>& u = context.Knots;
-    auto approximate = [&](int knots) {
-      return approximateKeepingTorsionSigns(
-        points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
-    };
-    QuinticApproximation approximation = quintic.ApproximationKnots != CrossValidatedKnots
-      ? approximate(std::clamp(quintic.ApproximationKnots, lowest, highest))
-      : fitWithFewerKnotsIfSingular(crossValidatedKnotCount(points, u, highest, closed), lowest, approximate);
     BuiltCurve built;
-    built.Spline = std::move(approximation.Spline);
+    built.Spline = std::move(approximation->Spline);
     CleanPolyline reference;
-    reference.Points = std::move(approximation.Polygon);
+    reference.Points = std::move(approximation->Polygon);
     reference.Closed = closed;
     built.ShapeReference = std::move(reference);
     return built;

@@ -1,5 +1,6 @@
 #include "TensionQuinticSpline.h"
 
+#include "FitPolyline.h" // lowestKnotCount
 #include "SparseSolve.h"
 
 #include <Eigen/Dense>
@@ -958,7 +959,7 @@ int crossValidatedKnotCount(
   // knots scored 6% above 19, with 15-18 between); beyond, 15% steps.
   constexpr int EveryCountUpTo = 64;
   constexpr double GridGrowth = 1.15;
-  const int lowest = closed ? 3 : 2;
+  const int lowest = lowestKnotCount(closed);
   std::vector<int> grid;
   for (int knots = lowest; knots <= highest;
        knots = knots < EveryCountUpTo ? knots + 1 : static_cast<int>(knots * GridGrowth))

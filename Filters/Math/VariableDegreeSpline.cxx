@@ -601,19 +601,18 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
     const double start = std::max(LowestVariableDegree, options.Degree);
     VariableDegreeOptions capped = options;
     capped.MaxDegree = std::max(start, options.MaxDegree);
-    // A closed curve needs three distinct knots.
-    const int lowest = context.Data.Closed ? 3 : 2;
-    const int highest = count / 2;
-    const bool knotsGiven = options.ApproximationKnots >= 2 || options.ApproximationKnots == CrossValidatedKnots;
-    if (options.Mode != VariableDegreeMode::Interpolate && highest >= lowest && knotsGiven)
+    if (options.Mode != VariableDegreeMode::Interpolate)
     {
-      const std::vector<Vec3>& points = context.Data.Points;
-      const std::vector<double>& u = context.Knots;
-      auto approximate = [&](int knots) { return approximateData(context, capped, knots, start); };
-      return options.ApproximationKnots != CrossValidatedKnots
-        ? approximate(std::clamp(options.ApproximationKnots, lowest, highest))
-        : fitWithFewerKnotsIfSingular(
-            crossValidatedKnotCount(points, u, highest, context.Data.Closed), lowest, approximate);
+      const bool closed = context.Data.Closed;
+      const int highest = count / 2;
+      std::optional<BuiltCurve> approximation = fitWithKnotCount(
+        options.ApproximationKnots, closed, highest,
+        [&] { return crossValidatedKnotCount(context.Data.Points, context.Knots, highest, closed); },
+        [&](int knots) { return approximateData(context, capped, knots, start); });
+      if (approximation)
+      {
+        return std::move(*approximation);
+      }
     }
     std::vector<double> degrees(count, start);
     const auto& given = context.PointValues;
