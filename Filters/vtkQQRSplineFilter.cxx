@@ -21,16 +21,24 @@ const char* vtkQQRSplineFilter::GetPointValuesArrayName()
 
 const char* vtkQQRSplineFilter::GetModeAsString()
 {
-  return this->Mode == APPROXIMATE ? "Approximate" : "Interpolate";
+  switch (this->Mode)
+  {
+    case APPROXIMATE:
+      return "Approximate";
+    case LOCAL_INTERPOLATION:
+      return "LocalInterpolation";
+    default:
+      return "Interpolate";
+  }
 }
 
 int vtkQQRSplineFilter::RequestData(
   vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* output)
 {
-  if (this->Continuity == C2_FC && this->Mode == INTERPOLATE)
+  if (this->Continuity == C2_FC && this->Mode != APPROXIMATE)
   {
-    vtkWarningMacro("Continuity C2_FC needs x = y = 0, which the local interpolation cannot "
-                    "take (it sets x and y from (3.18)): using C2.");
+    vtkWarningMacro("Continuity C2_FC needs x = y = 0 on the control polygon (Mode Approximate): "
+                    "using C2.");
   }
   if (std::min(this->Alpha, this->Beta) <= 3.0)
   {
@@ -54,7 +62,9 @@ shapesplines::BuiltCurve vtkQQRSplineFilter::BuildCurve(
   const shapesplines::FitContext& context) const
 {
   shapesplines::QQROptions options;
-  options.Interpolate = this->Mode == INTERPOLATE;
+  options.Construction = this->Mode == APPROXIMATE ? shapesplines::QQRConstruction::ControlPolygon
+    : this->Mode == LOCAL_INTERPOLATION           ? shapesplines::QQRConstruction::LocalInterpolation
+                                                  : shapesplines::QQRConstruction::Interpolation;
   options.Automatic = this->Automatic;
   options.Alpha = this->Alpha;
   options.Beta = this->Beta;

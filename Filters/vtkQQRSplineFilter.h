@@ -2,30 +2,35 @@
  * @class   vtkQQRSplineFilter
  * @brief   C2 cubic B-spline-like curves on the quartic qqr basis (two
  *          exponential shape parameters, three local ones) through or near
- *          each polyline, built locally without a global solve
+ *          each polyline
  *
- * Wang and Zhang's qqr curves (paper 003): every span is a quartic
+ * Wang and Zhang's qqr curves ("Curve construction based on quartic
+ * Bernstein-like basis", AIMS Mathematics 2020): every span is a quartic
  * Bernstein-like curve with exponents alpha, beta; joined, they form cubic
  * B-spline-like curves with local shape parameters x, y, z. With
  * alpha = beta = 4 and the paper's local parameters they are the classical
  * cubic B-splines.
  *
- * Mode INTERPOLATE (default) is the local interpolation of section 3.6:
- * every point is passed through, with tangents and second derivatives from
- * its two neighbours only, so editing a point changes four spans at most.
- * It is a shape design tool rather than an accurate one: its second
- * derivative at a point is 4 (alpha - 1) / alpha times the second difference
- * (3 times at alpha = 4), so curvature at the points is about three times
- * too large and does not converge as points are added. Mode APPROXIMATE
- * takes the points as the control polygon (the classical cubic B-spline
- * curve at the defaults; shape violations are counted against the polygon).
+ * Mode INTERPOLATE (default) solves for the control points so that the
+ * curve passes through every point: at the defaults it is the classical
+ * cubic spline interpolant with not-a-knot ends, and its curvature and
+ * torsion converge at second order. Mode LOCAL_INTERPOLATION is the paper's
+ * section 3.6: every point is passed through with tangents and second
+ * derivatives from its two neighbours only, no system solved, so editing a
+ * point changes four spans at most; a shape design tool, not an estimator:
+ * its second derivative at a point is 4 (alpha - 1) / alpha times the second
+ * difference (3 times at alpha = 4), so curvature at the points is about
+ * three times too large and does not converge as points are added. Mode
+ * APPROXIMATE takes the points as the control polygon (the classical cubic
+ * B-spline curve at the defaults; shape violations are counted against the
+ * polygon).
  *
- * With Automatic on (default) the local parameters and exponents of the
- * spans where the shape audit (paper 001, Definition 1) fails are searched,
- * span by span, for steps that lower the violations; some lines keep a few
- * (see the README). Continuity C2_FC (approximation) sets x = y = 0 and
- * alpha = beta >= FrenetOrder + 3: C2 and Frenet frame continuous to order
- * 2 FrenetOrder + 3 (Theorem 13).
+ * With Automatic on (default) the exponents at the knots of the spans where
+ * the shape audit (Costantini and Manni, Definition 1) fails are raised,
+ * within the bounds of the automatic modes (no cusp, no span far from its
+ * data); what the exponents cannot remove is reported. Continuity C2_FC
+ * (approximation) sets x = y = 0 and alpha = beta >= FrenetOrder + 3: C2 and
+ * Frenet frame continuous to order 2 FrenetOrder + 3 (Theorem 13).
  *
  * Output: the contract of vtkShapeSplineFilter, plus the point array Alpha
  * (the larger exponent of each sample's span) and the cell array MaxAlpha.
@@ -48,7 +53,8 @@ public:
   enum ModeType
   {
     INTERPOLATE = 0,
-    APPROXIMATE = 1
+    APPROXIMATE = 1,
+    LOCAL_INTERPOLATION = 2
   };
 
   enum LocalParametersType
@@ -65,21 +71,23 @@ public:
 
   ///@{
   /**
-   * INTERPOLATE (default; local interpolation, section 3.6) or APPROXIMATE
-   * (the points are the control polygon).
+   * INTERPOLATE (default; the curve through the points, control points
+   * solved), APPROXIMATE (the points are the control polygon) or
+   * LOCAL_INTERPOLATION (section 3.6: no solve, curvature 3x off).
    */
-  vtkSetClampMacro(Mode, int, INTERPOLATE, APPROXIMATE);
+  vtkSetClampMacro(Mode, int, INTERPOLATE, LOCAL_INTERPOLATION);
   vtkGetMacro(Mode, int);
   void SetModeToInterpolate() { this->SetMode(INTERPOLATE); }
   void SetModeToApproximate() { this->SetMode(APPROXIMATE); }
+  void SetModeToLocalInterpolation() { this->SetMode(LOCAL_INTERPOLATION); }
   const char* GetModeAsString();
   ///@}
 
   ///@{
   /**
-   * Search the local parameters and exponents of the spans where the shape
-   * audit fails, for steps that lower the violations (default on); off,
-   * Alpha, Beta and the local parameters everywhere.
+   * Raise the exponents at the knots of the spans where the shape audit
+   * fails, within the automatic modes' bounds (default on); off, Alpha and
+   * Beta everywhere.
    */
   vtkSetMacro(Automatic, bool);
   vtkGetMacro(Automatic, bool);

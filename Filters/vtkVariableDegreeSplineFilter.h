@@ -159,7 +159,7 @@ protected:
   int NumberOfKnots = 0;
   bool AutomaticDegrees = true;
   double Degree = 5.0;
-  double MaxDegree = 200.0;
+  double MaxDegree = 1000.0;
   double Lambda = 1.0;
   bool ScaleLambdaWithDegree = true;
   int EndCondition = NATURAL;

@@ -96,7 +96,7 @@ Options of fit:
   --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1);
                          vdps: --lambda is the corner cutting tension (1)
   --degree K             vdps: starting (fixed with --fixed) degree (default 5)
-  --max-degree K         vdps: cap of the automatic degrees (default 200)
+  --max-degree K         vdps: cap of the automatic degrees (default 1000)
   --alpha A, --beta B    qqr: exponents (default 4, 4; automatic starts there)
   --max-alpha A          qqr: cap of the automatic exponents (default 200)
   --z Z                  qqr: local bias z at every knot instead of the paper's
@@ -707,7 +707,7 @@ std::map<std::string, FamilyFactory> Families()
        filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
        filter->SetAutomaticDegrees(!args.Flag("fixed"));
        filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
-       filter->SetMaxDegree(args.Number("max-degree", 200.0, 5.0, 1000.0));
+       filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
        filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } },

@@ -15,12 +15,11 @@ namespace
 class FlatnessThreshold
 {
 public:
-  FlatnessThreshold(const Curve& curve, const CleanPolyline& data, double coordinateNoise)
+  FlatnessThreshold(const Curve& curve, double diagonal, double coordinateNoise)
     : Knots(curve.knots())
     , Noise(coordinateNoise)
   {
     constexpr double RelativeFlatCurvature = 1e-10;
-    const double diagonal = boundingBoxDiagonal(data.Points);
     this->Floor = RelativeFlatCurvature / (diagonal > 0 ? diagonal : 1.0);
   }
 
@@ -55,7 +54,7 @@ double toDataUnits(double perNormalisedLength, double scale)
 std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
   const CleanPolyline& data, double coordinateNoise)
 {
-  const FlatnessThreshold flat(curve, data, coordinateNoise);
+  const FlatnessThreshold flat(curve, boundingBoxDiagonal(data.Points), coordinateNoise);
   std::vector<double> thresholds(samples.size());
   for (int k = 0; k < samples.size(); ++k)
   {
@@ -64,61 +63,103 @@ std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& sample
   return thresholds;
 }
 
+CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
+  : Auditor(reference, shape, tolerances)
+  , Subdivisions(std::max(subdivisions, 1))
+  , CoordinateNoise(coordinateNoise)
+  , Diagonal(boundingBoxDiagonal(reference.Points))
+  , Reference(reference)
+  , Curvature(std::max(reference.numberOfSpans(), 0), 0.0)
+  , Speed(std::max(reference.numberOfSpans(), 0), 1.0)
+  , Deviation(std::max(reference.numberOfSpans(), 0), 0.0)
+  , LocalLength(std::max(reference.numberOfSpans(), 0), 1.0)
+{
+  // The longest of a segment and its neighbours: how far a curve near the
+  // polygon may stray from it there.
+  const int spans = reference.numberOfSpans();
+  for (int j = 0; j < spans; ++j)
+  {
+    double longest = 0.0;
+    for (const int k : { j - 1, j, j + 1 })
+    {
+      if (reference.Closed || (k >= 0 && k < spans))
+      {
+        longest = std::max(longest, reference.segment(((k % spans) + spans) % spans).norm());
+      }
+    }
+    this->LocalLength[j] = longest > 0.0 ? longest : 1.0;
+  }
+}
+
+void CurveAuditor::audit(const Curve& curve, int j)
+{
+  // Span by span: the audit keeps no samples, so auditing costs no memory traffic.
+  const FlatnessThreshold flat(curve, this->Diagonal, this->CoordinateNoise);
+  const auto& knots = curve.knots();
+  const int subdivisions = this->Subdivisions;
+  std::vector<Derivatives> values(subdivisions + 1);
+  std::vector<double> thresholds(subdivisions + 1);
+  const double h = knots[j + 1] - knots[j];
+  // Both ends of the span, so that its frames see both knots.
+  for (int k = 0; k <= subdivisions; ++k)
+  {
+    values[k] = curve.evaluateOnSpan(j, knots[j] + h * k / subdivisions, 3);
+    thresholds[k] = flat(j, values[k][1]);
+  }
+  // A flat sample's normal only continues the frames (parallel transport):
+  // the audit reads no normal where the curvature vanishes.
+  const auto frames = frenetFrames(values, thresholds);
+  const double chordSpeed = (values[subdivisions][0] - values[0][0]).norm() / h;
+  double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
+  this->Auditor.forget(j);
+  // Both ends of every span: torsion is one-sided at a knot (the third
+  // derivative jumps), so each knot is audited from both sides, and the
+  // audit, and the automatic modes driven by it, do not depend on the
+  // direction of the line.
+  for (int k = 0; k <= subdivisions; ++k)
+  {
+    AuditSample sample;
+    sample.Span = j;
+    sample.Knot = k == 0 ? j : (k == subdivisions ? j + 1 : -1);
+    sample.Frame = frames[k];
+    sample.Flat = frames[k].Curvature <= thresholds[k];
+    this->Auditor.add(sample);
+    curvature = std::max(curvature, frames[k].Curvature);
+    speed = std::min(speed, values[k][1].norm());
+    deviation = std::max(deviation, this->distanceToSegment(values[k][0], j));
+  }
+  this->Curvature[j] = curvature;
+  this->Speed[j] = chordSpeed > 0.0 ? speed / chordSpeed : 1.0;
+  this->Deviation[j] = deviation / this->LocalLength[j];
+}
+
+double CurveAuditor::distanceToSegment(const Vec3& p, int j) const
+{
+  const Vec3& a = this->Reference.Points[j];
+  const Vec3 ab = this->Reference.segment(j);
+  const double squared = ab.squaredNorm();
+  const double along = squared > 0.0 ? std::clamp((p - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
+  return (p - (a + along * ab)).norm();
+}
+
+void CurveAuditor::auditAll(const Curve& curve, const ProgressCallback& progress)
+{
+  const int spans = curve.numberOfSpans();
+  for (int j = 0; j < spans; ++j)
+  {
+    reportProgress(progress, j, 1024, static_cast<double>(j) / spans);
+    this->audit(curve, j);
+  }
+}
+
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
   const ProgressCallback& progress)
 {
-  // Span by span: the audit keeps no samples, so auditing costs no memory traffic.
-  subdivisions = std::max(subdivisions, 1);
-  const FlatnessThreshold flat(curve, data, coordinateNoise);
-  ShapeAuditor auditor(data, shape, tolerances);
-  const auto& knots = curve.knots();
-  const int spans = curve.numberOfSpans();
-  std::vector<Derivatives> values(subdivisions + 1);
-  std::vector<double> thresholds(subdivisions + 1);
-  Vec3 lastNormal;
-  for (int j = 0; j < spans; ++j)
-  {
-    reportProgress(progress, j, 1024, static_cast<double>(j) / spans);
-    // Both ends of the span, so that its frames see both knots.
-    for (int k = 0; k <= subdivisions; ++k)
-    {
-      const double t = knots[j] + (knots[j + 1] - knots[j]) * k / subdivisions;
-      values[k] = curve.evaluateOnSpan(j, t, 3);
-      thresholds[k] = flat(j, values[k][1]);
-    }
-    const auto frames = frenetFrames(values, thresholds, j > 0 ? &lastNormal : nullptr);
-    lastNormal = frames[subdivisions - 1].Normal; // the next span starts after this sample
-    // Both ends of every span: torsion is one-sided at a knot (the third
-    // derivative jumps), so each knot is audited from both sides, and the
-    // audit, and the automatic modes driven by it, do not depend on the
-    // direction of the line.
-    for (int k = 0; k <= subdivisions; ++k)
-    {
-      AuditSample sample;
-      sample.Span = j;
-      sample.Knot = k == 0 ? j : (k == subdivisions ? j + 1 : -1);
-      sample.Frame = frames[k];
-      auditor.add(sample);
-    }
-  }
+  CurveAuditor auditor(data, shape, tolerances, subdivisions, coordinateNoise);
+  auditor.auditAll(curve, progress);
   return auditor.result();
-}
-
-BuiltCurve fixedOrPreserved(bool automatic, const FitContext& context,
-  const CleanPolyline& reference, const std::function<std::unique_ptr<Curve>()>& build,
-  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds)
-{
-  BuiltCurve built;
-  if (!automatic)
-  {
-    built.Spline = build();
-    return built;
-  }
-  ShapeAudit audit;
-  built.Spline = preserveShape(context, reference, build, tighten, maxRounds, &audit);
-  built.Audit = std::move(audit);
-  return built;
 }
 
 ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference) const
@@ -126,39 +167,6 @@ ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference)
   return auditCurve(curve, reference, discreteShape(reference, this->Options.Tolerances),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
-}
-
-std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyline& reference,
-  const std::function<std::unique_ptr<Curve>()>& build,
-  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds,
-  ShapeAudit* lastAudit)
-{
-  const FitOptions& options = context.Options;
-  const DiscreteShape shape = discreteShape(reference, options.Tolerances);
-  std::unique_ptr<Curve> curve = build();
-  ShapeAudit audit;
-  for (int round = 0;; ++round)
-  {
-    audit = auditCurve(*curve, reference, shape, options.Tolerances, options.AuditSubdivisions,
-      context.CoordinateNoise, options.Progress);
-    if (audit.preserving() || round >= maxRounds)
-    {
-      break;
-    }
-    std::vector<char> failing(audit.SpanMask.size());
-    std::transform(audit.SpanMask.begin(), audit.SpanMask.end(), failing.begin(),
-      [](unsigned mask) { return mask != 0 ? 1 : 0; });
-    if (!tighten(failing))
-    {
-      break;
-    }
-    curve = build();
-  }
-  if (lastAudit)
-  {
-    *lastAudit = std::move(audit);
-  }
-  return curve;
 }
 
 SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress)

@@ -66,27 +66,6 @@ struct BuiltCurve
 using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;
 
 /**
- * Automatic shape preservation, written once for every family: build() a
- * curve and audit it against reference; while some span fails
- * (failing[j] != 0), tighten(failing) raises the family's tension or degree
- * on or next to the failing spans, or returns false when it cannot any more
- * (its cap is reached), and the curve is rebuilt. At most maxRounds rounds.
- * Returns the last curve built; its audit goes to lastAudit if given.
- */
-std::unique_ptr<Curve> preserveShape(const FitContext& context, const CleanPolyline& reference,
-  const std::function<std::unique_ptr<Curve>()>& build,
-  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds = 64,
-  ShapeAudit* lastAudit = nullptr);
-
-/**
- * What a family's builder returns: build()'s curve as it is (automatic
- * false), or made shape preserving by preserveShape() with its last audit.
- */
-BuiltCurve fixedOrPreserved(bool automatic, const FitContext& context,
-  const CleanPolyline& reference, const std::function<std::unique_ptr<Curve>()>& build,
-  const std::function<bool(const std::vector<char>& failing)>& tighten, int maxRounds);
-
-/**
  * A family's curve through one polyline, audited, with its sampling planned
  * but not done: sampleFit() samples it when its output is written, so that
  * no more than one line's samples per thread are ever held.
@@ -134,7 +113,49 @@ struct SampledCurve
 std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
   const CleanPolyline& data, double coordinateNoise);
 
-/// Audits a curve through data on a uniform sampling (for automatic tension loops).
+/**
+ * The shape audit of a curve against its reference polygon, kept span by
+ * span: an automatic mode audits the whole curve once, then again only the
+ * spans a change can move. Each span is sampled uniformly (subdivisions + 1
+ * samples, both knots included); besides its findings it keeps the span's
+ * largest curvature, its lowest speed relative to its chord and its largest
+ * distance from the reference polygon, the bounds an automatic mode must not
+ * cross. The reference and shape must outlive it.
+ */
+class CurveAuditor
+{
+public:
+  CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
+    const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
+
+  /// (Re-)audits span j of curve, forgetting what the span's samples found before.
+  void audit(const Curve& curve, int span);
+  void auditAll(const Curve& curve, const ProgressCallback& progress = {});
+  ShapeAudit result() const { return this->Auditor.result(); }
+
+  /// Largest curvature on span j's samples (the curve's units).
+  double largestCurvature(int span) const { return this->Curvature[span]; }
+  /// Lowest |s'| on span j's samples over its chord speed |s(t_j+1) - s(t_j)| / h_j.
+  double lowestSpeed(int span) const { return this->Speed[span]; }
+  /// Largest distance of span j's samples from the reference's segment j,
+  /// over the longest of that segment and its neighbours.
+  double largestDeviation(int span) const { return this->Deviation[span]; }
+
+private:
+  double distanceToSegment(const Vec3& p, int span) const;
+
+  ShapeAuditor Auditor;
+  int Subdivisions;
+  double CoordinateNoise;
+  double Diagonal;
+  const CleanPolyline& Reference;
+  std::vector<double> Curvature;
+  std::vector<double> Speed;
+  std::vector<double> Deviation;
+  std::vector<double> LocalLength;
+};
+
+/// Audits a curve through data on a uniform sampling.
 ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const DiscreteShape& shape,
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
   const ProgressCallback& progress = {});

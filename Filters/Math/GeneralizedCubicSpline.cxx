@@ -1,5 +1,6 @@
 #include "GeneralizedCubicSpline.h"
 
+#include "AutomaticShape.h"
 #include "SparseSolve.h"
 
 #include <algorithm>
@@ -385,7 +386,7 @@ double raisedTension(SpaceKind kind, double tension, double maxTension)
     case SpaceKind::Polynomial:
       return 0.0;
     case SpaceKind::Exponential:
-      next = std::max(1.0, 2.0 * tension);
+      next = std::max(2.0, 4.0 * tension);
       break;
     case SpaceKind::Trigonometric:
       next = std::max(1.0, tension + 0.5 * (Pi - tension));
@@ -417,57 +418,23 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
     {
       p = largestTension(options.Kind, std::min(p, options.MaxTension));
     }
-    auto build = [&]() {
+    auto raise = [&](double p) { return raisedTension(options.Kind, p, options.MaxTension); };
+    ShapeLadder ladder;
+    ladder.TopLevel = stepsToCap(*std::min_element(tension.begin(), tension.end()), raise);
+    ladder.MaxRounds = options.MaxRounds;
+    ladder.Build = [&](const std::vector<int>& levels) {
       std::vector<SpaceKernel> kernels;
       kernels.reserve(spans);
-      for (const double p : tension)
+      for (int k = 0; k < spans; ++k)
       {
-        kernels.emplace_back(options.Kind, p);
+        kernels.emplace_back(options.Kind, raisedTimes(tension[k], levels[k], raise));
       }
       return std::make_unique<GeneralizedCubicSpline>(GeneralizedCubicSpline::interpolate(
         context.Data.Points, context.Knots, context.Data.Closed, kernels));
     };
-    // Raise the failing spans; a failing span already at the cap needs its
-    // neighbours tightened too (the curvature it shares with them at its knots
-    // comes from the C2 joins).
-    auto tighten = [&](const std::vector<char>& failing) {
-      std::vector<char> raise(spans, 0);
-      for (int k = 0; k < spans; ++k)
-      {
-        if (!failing[k])
-        {
-          continue;
-        }
-        if (raisedTension(options.Kind, tension[k], options.MaxTension) > tension[k])
-        {
-          raise[k] = 1;
-          continue;
-        }
-        for (const int neighbour : { k - 1, k + 1 })
-        {
-          if (neighbour >= 0 && neighbour < spans)
-          {
-            raise[neighbour] = 1;
-          }
-          else if (context.Data.Closed)
-          {
-            raise[(neighbour + spans) % spans] = 1;
-          }
-        }
-      }
-      bool raised = false;
-      for (int k = 0; k < spans; ++k)
-      {
-        const double next =
-          raise[k] ? raisedTension(options.Kind, tension[k], options.MaxTension) : tension[k];
-        raised = raised || next > tension[k];
-        tension[k] = next;
-      }
-      return raised;
-    };
     // The polynomial kind has no tension to raise.
-    return fixedOrPreserved(options.Automatic && options.Kind != SpaceKind::Polynomial, context,
-      context.Data, build, tighten, options.MaxRounds);
+    return fixedOrAutomatic(options.Automatic && options.Kind != SpaceKind::Polynomial, context,
+      context.Data, ladder);
   };
 }
 } // namespace shapesplines

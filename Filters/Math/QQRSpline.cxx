@@ -1,5 +1,8 @@
 #include "QQRSpline.h"
 
+#include "AutomaticShape.h"
+#include "SparseSolve.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -388,53 +391,254 @@ std::vector<std::array<double, 2>> knotExponentsToSpans(
 }
 } // namespace
 
-QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, double alpha, double beta, const Local& local, const QQRKnotShape& knotShape)
+QQRSpline QQRSpline::make(QQRConstruction construction, const std::vector<Vec3>& points,
+  const std::vector<double>& knots, bool closed, double alpha, double beta, const Local& local,
+  const QQRKnotShape& knotShape)
 {
   const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, knotShape, false);
+  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, knotShape, construction);
 }
 
-QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, const std::vector<double>& knotExponents, const Local& local)
-{
-  return approximate(points, knots, closed, knotExponents, local, QQRKnotShape{});
-}
-
-QQRSpline QQRSpline::approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, const std::vector<double>& knotExponents, const Local& local,
-  const QQRKnotShape& knotShape)
+QQRSpline QQRSpline::make(QQRConstruction construction, const std::vector<Vec3>& points,
+  const std::vector<double>& knots, bool closed, const std::vector<double>& knotExponents,
+  const Local& local, const QQRKnotShape& knotShape)
 {
   return build(points, knots, closed,
     knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, knotShape,
-    false);
+    construction);
 }
 
-QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, double alpha, double beta, const Local& local, const QQRKnotShape& knotShape)
+namespace
 {
-  const int spans = closed ? static_cast<int>(points.size()) : static_cast<int>(points.size()) - 1;
-  return build(points, knots, closed, globalExponents(spans, alpha, beta), local, knotShape, true);
+/**
+ * Section 3.4's construction of one qqr curve: the knot intervals beyond the
+ * ends (mirrored) or around (closed), the local shape parameters per knot
+ * interval, and the five Bezier points of each span as a combination of the
+ * control points P(k-1)..P(k+2) (bezier(), for points or, with unit
+ * vectors, for their weights).
+ */
+class QQRGeometry
+{
+public:
+  QQRGeometry(std::vector<double> dh, int points, bool closed, const QQRLocalShape& local,
+    const QQRKnotShape& knotShape, bool localInterpolation)
+    : Dh(std::move(dh))
+    , Points(points)
+    , Closed(closed)
+    , Local(local)
+    , KnotShape(knotShape)
+    , LocalInterpolation(localInterpolation)
+  {
+  }
+
+  /// Span k's Bezier points from P(j), j = k-1..k+2 (P takes the paper's index minus one).
+  template <class T, class Control>
+  std::array<T, 5> bezier(int k, const Control& P) const
+  {
+    // R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4 (paper index i = k + 2).
+    auto R = [&](int i) -> T { return (1.0 - this->Z(i)) * P(i - 1) + this->Z(i) * P(i); };
+    auto S = [&](int i) -> T {
+      const double x = this->X(i), y = this->Y(i);
+      return y * P(i - 2) + (1.0 - x - y) * P(i - 1) + x * P(i);
+    };
+    auto Tk = [&](int i) -> T {
+      const double m = this->mu(i), u = this->ups(i);
+      return u * u * R(i - 1) + 2.0 * u * m * S(i) + m * m * R(i);
+    };
+    const int i = k + 2;
+    const T middle = R(i - 1);
+    return { Tk(i - 1), T(this->ups(i - 1) * S(i - 1) + this->mu(i - 1) * middle), middle,
+      T(this->ups(i) * middle + this->mu(i) * S(i)), Tk(i) };
+  }
+
+  /// The local shape parameters in use, one per point.
+  QQRKnotShape knotShape() const
+  {
+    QQRKnotShape used;
+    for (int j = 0; j < this->Points; ++j)
+    {
+      used.X.push_back(this->X(j + 1));
+      used.Y.push_back(this->Y(j + 1));
+      used.Z.push_back(this->Z(j + 1));
+    }
+    return used;
+  }
+
+private:
+  int spans() const { return static_cast<int>(this->Dh.size()); }
+  /// h_i of the paper: knot u_i is t_{i-2}.
+  double H(int i) const
+  {
+    int j = i - 2;
+    const int spans = this->spans();
+    if (this->Closed)
+    {
+      return this->Dh[((j % spans) + spans) % spans];
+    }
+    // Beyond the ends the intervals mirror the ones inside (decision).
+    j = j < 0 ? -1 - j : (j >= spans ? 2 * spans - 1 - j : j);
+    return this->Dh[std::clamp(j, 0, spans - 1)];
+  }
+  double mu(int i) const { return this->H(i) / (this->H(i) + this->H(i + 1)); }
+  double ups(int i) const { return this->H(i + 1) / (this->H(i) + this->H(i + 1)); }
+  /// The value per point at the paper's index i (point i - 1, QQRKnotShape), or NaN.
+  double perPoint(const std::vector<double>& values, int i) const
+  {
+    int j = i - 1;
+    if (this->Closed)
+    {
+      j = ((j % this->Points) + this->Points) % this->Points;
+    }
+    return values.empty() || j < 0 || j >= this->Points ? std::numeric_limits<double>::quiet_NaN()
+                                                        : values[j];
+  }
+  double Z(int i) const
+  {
+    const double z = this->perPoint(this->KnotShape.Z, i);
+    if (!std::isnan(z))
+    {
+      return z;
+    }
+    return std::isnan(this->Local.Z)
+      ? (2.0 * this->H(i) + this->H(i + 1)) / (2.0 * (this->H(i) + this->H(i + 1) + this->H(i + 2)))
+      : this->Local.Z;
+  }
+  double X(int i) const
+  {
+    if (this->LocalInterpolation)
+    {
+      return -this->H(i) * this->Z(i) / (2.0 * this->H(i + 1)); // (3.18) with its missing 1/2
+    }
+    const double x = this->perPoint(this->KnotShape.X, i);
+    if (!std::isnan(x))
+    {
+      return x;
+    }
+    return std::isnan(this->Local.X)
+      ? this->H(i) / (4.0 * (this->H(i) + this->H(i + 1) + this->H(i + 2)))
+      : this->Local.X;
+  }
+  double Y(int i) const
+  {
+    if (this->LocalInterpolation)
+    {
+      return -this->H(i + 1) * (1.0 - this->Z(i - 1)) / (2.0 * this->H(i)); // (3.18)
+    }
+    const double y = this->perPoint(this->KnotShape.Y, i);
+    if (!std::isnan(y))
+    {
+      return y;
+    }
+    return std::isnan(this->Local.Y)
+      ? this->H(i + 1) / (4.0 * (this->H(i - 1) + this->H(i) + this->H(i + 1)))
+      : this->Local.Y;
+  }
+
+  std::vector<double> Dh;
+  int Points;
+  bool Closed;
+  QQRLocalShape Local;
+  const QQRKnotShape& KnotShape;
+  bool LocalInterpolation;
+};
+
+/// Weights of the r-th derivative (in u) of span k at its start (end false) or
+/// end over its control points P(k-1)..P(k+2); non-finite where unbounded.
+Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<double, 2>& exponents,
+  double h, int k, bool end, int r)
+{
+  const auto weights = geometry.bezier<Eigen::Vector4d>(
+    k, [k](int j) { return Eigen::Vector4d(Eigen::Vector4d::Unit(j - (k - 1))); });
+  const auto basis = qqrBasis(end ? 1.0 : 0.0, exponents[0], exponents[1], r);
+  Eigen::Vector4d out = Eigen::Vector4d::Zero();
+  for (int m = 0; m < 5; ++m)
+  {
+    if (basis[m][r] != 0.0)
+    {
+      out += basis[m][r] * weights[m];
+    }
+  }
+  return out / std::pow(h, r);
 }
 
-QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, const std::vector<double>& knotExponents, const Local& local)
+/**
+ * The control points P(-1)..P(n) (open) or P(0)..P(n-1) (closed) of the qqr
+ * curve through the n points at the knots. Open ends: not-a-knot (the third
+ * derivative continuous at the second and the next-to-last knots, as
+ * SciPy's CubicSpline), natural (s'' = 0) where a line has only two spans
+ * or an end exponent leaves the third derivative unbounded, doubled control
+ * points where it leaves the second unbounded too.
+ */
+std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
+  const std::vector<double>& dh, bool closed, const QQRGeometry& geometry,
+  const std::vector<std::array<double, 2>>& exponents, double* condition)
 {
-  return interpolate(points, knots, closed, knotExponents, local, QQRKnotShape{});
+  const int n = static_cast<int>(points.size());
+  const int spans = static_cast<int>(dh.size());
+  const int unknowns = closed ? n : n + 2;
+  auto column = [&](int j) { return closed ? ((j % n) + n) % n : j + 1; };
+  Triplets entries;
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  auto addRow = [&](int row, int k, const Eigen::Vector4d& weights, double sign) {
+    for (int c = 0; c < 4; ++c)
+    {
+      entries.emplace_back(row, column(k - 1 + c), sign * weights[c]);
+    }
+  };
+  // The curve passes through every point: at its knot, the start of its span
+  // (the end of the last span for an open line's last point).
+  for (int i = 0; i < n; ++i)
+  {
+    const int k = std::min(i, spans - 1);
+    addRow(i, k, derivativeWeights(geometry, exponents[k], dh[k], k, i > k, 0), 1.0);
+    rhs.row(i) = points[i].transpose();
+  }
+  if (!closed)
+  {
+    auto finite = [](const Eigen::Vector4d& w) { return w.allFinite(); };
+    // End conditions at the knot after the first span and before the last.
+    const int ends[2][2] = { { 0, 1 }, { spans - 2, spans - 1 } };
+    for (int e = 0; e < 2; ++e)
+    {
+      const int row = n + e;
+      const auto [before, after] = ends[e];
+      if (spans >= 3)
+      {
+        const Eigen::Vector4d left = derivativeWeights(geometry, exponents[before], dh[before], before, true, 3);
+        const Eigen::Vector4d right = derivativeWeights(geometry, exponents[after], dh[after], after, false, 3);
+        if (finite(left) && finite(right))
+        {
+          addRow(row, before, left, 1.0);
+          addRow(row, after, right, -1.0);
+          continue;
+        }
+      }
+      const int k = e == 0 ? 0 : spans - 1;
+      const Eigen::Vector4d second = derivativeWeights(geometry, exponents[k], dh[k], k, e == 1, 2);
+      if (finite(second))
+      {
+        addRow(row, k, second, 1.0);
+        continue;
+      }
+      const int outer = e == 0 ? -1 : n;
+      const int inner = e == 0 ? 0 : n - 1;
+      entries.emplace_back(row, column(outer), 1.0);
+      entries.emplace_back(row, column(inner), -1.0);
+    }
+  }
+  const Eigen::MatrixX3d solution = solveSparse(unknowns, entries, rhs, condition);
+  std::vector<Vec3> control(unknowns);
+  for (int j = 0; j < unknowns; ++j)
+  {
+    control[j] = solution.row(j).transpose();
+  }
+  return control;
 }
-
-QQRSpline QQRSpline::interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-  bool closed, const std::vector<double>& knotExponents, const Local& local,
-  const QQRKnotShape& knotShape)
-{
-  return build(points, knots, closed,
-    knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, knotShape,
-    true);
-}
+} // namespace
 
 QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<double>& knots,
   bool closed, std::vector<std::array<double, 2>> exponents, const Local& local,
-  const QQRKnotShape& knotShape, bool interpolate)
+  const QQRKnotShape& knotShape, QQRConstruction construction)
 {
   const int n = static_cast<int>(points.size());
   const int spans = closed ? n : n - 1;
@@ -472,102 +676,30 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
       throw std::invalid_argument("qqr: local shape parameters must be finite (or NaN: the paper's)");
     }
   }
-  // The paper's indices: knot u_i is t_{i-2}, h_i = dh_{i-2}, P_j = D_j.
-  auto wrap = [](int j, int period) { return ((j % period) + period) % period; };
-  auto H = [&](int i) {
-    int j = i - 2;
-    if (closed)
-    {
-      return dh[wrap(j, spans)];
-    }
-    // Beyond the ends the intervals mirror the ones inside (decision).
-    if (j < 0)
-    {
-      j = -1 - j;
-    }
-    if (j >= spans)
-    {
-      j = 2 * spans - 1 - j;
-    }
-    return dh[std::clamp(j, 0, spans - 1)];
-  };
-  auto P = [&](int j) -> const Vec3& {
-    return closed ? points[wrap(j, n)] : points[std::clamp(j, 0, n - 1)]; // doubled ends
-  };
-  auto mu = [&](int i) { return H(i) / (H(i) + H(i + 1)); };
-  auto ups = [&](int i) { return H(i + 1) / (H(i) + H(i + 1)); };
-  // The value per point at the paper's index i (point i - 1, QQRKnotShape), or NaN.
-  auto perPoint = [&](const std::vector<double>& values, int i) {
-    int j = i - 1;
-    if (closed)
-    {
-      j = wrap(j, n);
-    }
-    return values.empty() || j < 0 || j >= n ? std::numeric_limits<double>::quiet_NaN() : values[j];
-  };
-  auto Z = [&](int i) {
-    const double z = perPoint(knotShape.Z, i);
-    if (!std::isnan(z))
-    {
-      return z;
-    }
-    return std::isnan(local.Z) ? (2.0 * H(i) + H(i + 1)) / (2.0 * (H(i) + H(i + 1) + H(i + 2)))
-                               : local.Z;
-  };
-  auto X = [&](int i) {
-    if (interpolate)
-    {
-      return -H(i) * Z(i) / (2.0 * H(i + 1)); // (3.18) with its missing 1/2
-    }
-    const double x = perPoint(knotShape.X, i);
-    if (!std::isnan(x))
-    {
-      return x;
-    }
-    return std::isnan(local.X) ? H(i) / (4.0 * (H(i) + H(i + 1) + H(i + 2))) : local.X;
-  };
-  auto Y = [&](int i) {
-    if (interpolate)
-    {
-      return -H(i + 1) * (1.0 - Z(i - 1)) / (2.0 * H(i)); // (3.18)
-    }
-    const double y = perPoint(knotShape.Y, i);
-    if (!std::isnan(y))
-    {
-      return y;
-    }
-    return std::isnan(local.Y) ? H(i + 1) / (4.0 * (H(i - 1) + H(i) + H(i + 1))) : local.Y;
-  };
-  // R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4.
-  auto R = [&](int i) -> Vec3 { return (1.0 - Z(i)) * P(i - 1) + Z(i) * P(i); };
-  auto S = [&](int i) -> Vec3 {
-    const double x = X(i), y = Y(i);
-    return y * P(i - 2) + (1.0 - x - y) * P(i - 1) + x * P(i);
-  };
-  auto T = [&](int i) -> Vec3 {
-    const double m = mu(i), u = ups(i);
-    return u * u * R(i - 1) + 2.0 * u * m * S(i) + m * m * R(i);
-  };
-
+  const QQRGeometry geometry(
+    dh, n, closed, local, knotShape, construction == QQRConstruction::LocalInterpolation);
   QQRSpline spline(knots, closed);
+  // Control point P(j): the data's (open ends doubled, P(-1) = P(0), as
+  // section 3.6 does), or those solved for the global interpolation (open:
+  // P(-1)..P(n), each end free for its end condition).
+  std::vector<Vec3> control;
+  if (construction == QQRConstruction::Interpolation)
+  {
+    control = interpolatingControlPoints(points, dh, closed, geometry, exponents, &spline.ConditionEstimate);
+  }
+  auto P = [&](int j) -> const Vec3& {
+    if (!control.empty())
+    {
+      return closed ? control[((j % n) + n) % n] : control[j + 1];
+    }
+    return closed ? points[((j % n) + n) % n] : points[std::clamp(j, 0, n - 1)];
+  };
   spline.Exponents = std::move(exponents);
-  for (auto* values : { &spline.KnotShape.X, &spline.KnotShape.Y, &spline.KnotShape.Z })
-  {
-    values->resize(n);
-  }
-  for (int j = 0; j < n; ++j)
-  {
-    spline.KnotShape.X[j] = X(j + 1);
-    spline.KnotShape.Y[j] = Y(j + 1);
-    spline.KnotShape.Z[j] = Z(j + 1);
-  }
+  spline.KnotShape = geometry.knotShape();
   spline.Bezier.resize(spans);
   for (int k = 0; k < spans; ++k)
   {
-    const int i = k + 2;
-    const Vec3 middle = R(i - 1);
-    spline.Bezier[k] = { T(i - 1), ups(i - 1) * S(i - 1) + mu(i - 1) * middle, middle,
-      ups(i) * middle + mu(i) * S(i), T(i) };
+    spline.Bezier[k] = geometry.bezier<Vec3>(k, P);
   }
   return spline;
 }
@@ -629,7 +761,7 @@ std::vector<SpanParameter> QQRSpline::spanParameters() const
 
 double raisedQQRExponent(double alpha, double maxAlpha)
 {
-  return std::min(maxAlpha, std::max(alpha + 1.0, 1.5 * alpha));
+  return std::max(alpha, std::min(maxAlpha, alpha + 1.0));
 }
 
 double QQRSpline::speedRatio(int span) const
@@ -655,498 +787,6 @@ double QQRSpline::speedRatio(int span) const
   return slowest;
 }
 
-namespace
-{
-/// One step of the automatic mode on a local parameter: half the way to its
-/// target, the target itself once within 1/1024 of it.
-double halfwayTo(double value, double target)
-{
-  const double next = 0.5 * (value + target);
-  return std::abs(next - target) < 1.0 / 1024.0 ? target : next;
-}
-
-/// An exponent lowered by one step of the automatic mode: half the way to 3
-/// (where the basis turns cubic), not below minAlpha.
-double loweredQQRExponent(double alpha, double minAlpha)
-{
-  return std::max(minAlpha, 3.0 + 0.5 * (alpha - 3.0));
-}
-
-/// The curve of the options' mode with exponents and local parameters per point.
-std::unique_ptr<QQRSpline> qqrCurve(const QQROptions& options, const CleanPolyline& data,
-  const std::vector<double>& knots, const std::vector<double>& exponents,
-  const QQRKnotShape& knotShape)
-{
-  const QQRSpline::Local local{ options.X, options.Y, options.Z };
-  return std::make_unique<QQRSpline>(options.Interpolate
-      ? QQRSpline::interpolate(data.Points, knots, data.Closed, exponents, local, knotShape)
-      : QQRSpline::approximate(data.Points, knots, data.Closed, exponents, local, knotShape));
-}
-
-/// One qqr fit (qqrBuilder's curve) in the orientation the context gives.
-BuiltCurve qqrFit(const QQROptions& options, const FitContext& context)
-{
-  const CleanPolyline& data = context.Data;
-  const bool closed = data.Closed;
-  const int n = static_cast<int>(data.Points.size());
-  const int spans = data.numberOfSpans();
-  const QQRSpline::Local local{ options.X, options.Y, options.Z };
-  // The user's z per point, where given in [0, 1] (NaN elsewhere: Z's value).
-  QQRKnotShape given;
-  for (const double z : context.PointValues)
-  {
-    given.Z.push_back(z >= 0.0 && z <= 1.0 ? z : std::numeric_limits<double>::quiet_NaN());
-  }
-  BuiltCurve built;
-  if (!options.Interpolate)
-  {
-    built.ShapeReference = data; // the control polygon is the shape of reference
-  }
-  if (!options.Automatic)
-  {
-    built.Spline = std::make_unique<QQRSpline>(options.Interpolate
-        ? QQRSpline::interpolate(
-            data.Points, context.Knots, closed, options.Alpha, options.Beta, local, given)
-        : QQRSpline::approximate(
-            data.Points, context.Knots, closed, options.Alpha, options.Beta, local, given));
-    return built;
-  }
-  // Automatic: alpha = beta at every knot (C2), from the larger of Alpha and
-  // Beta, and the local shape parameters per point (QQRKnotShape), from the
-  // options' (or the paper's) values.
-  //
-  // Decisions (measured, see the tests):
-  //
-  // 1. A large exponent does not tighten the curve towards the data polygon.
-  // Each span tends to its Bezier polygon E0..E4 with a corner at E2,
-  // approached with a speed ~ alpha^2 2^-alpha (1e-18 of the chord speed at
-  // alpha = 68); for the local interpolation (x, y < 0) that corner even
-  // turns the wrong way on convex data, where alpha = 4 already touches zero
-  // curvature mid-span and alpha < 4 keeps it positive. So the exponent at a
-  // knot may also be lowered (loweredQQRExponent, down to MinAlpha > 3,
-  // which keeps C2), not only raised.
-  //
-  // 2. What pulls a span k towards its chord are the local parameters
-  // (QQRKnotShape): its Bezier points lie on the chord's line when
-  // Z[k-1] = 1 and Z[k+1] = 0 (the middle Bezier points of the spans on
-  // either side move onto D_k and D_{k+1}), and for the control polygon also
-  // Y[k] = 0 and X[k+1] = 0 (S_k, S_{k+1} on the line). The suggested
-  // x_i = z_i = 0 next to Akima's straight run is X[k+1] = Z[k+1] = 0, the
-  // right end of that condition (checked: it makes the control-polygon
-  // curve's last span of the run straight); the left end of a run needs
-  // Y[k] = 0, Z[k-1] = 1. In the interpolation the tangent (3.20) at D_k
-  // then follows the chord of span k alone, and its second derivative (3.21)
-  // too (Z[k] alone only slides the middle point along the chord).
-  //
-  // 3. Those targets conflict: Z[k] is pulled to 0 by a failing span k - 1
-  // and to 1 by a failing span k + 1, and Z[k-1] = 1 with Z[k] = 0 stops the
-  // interpolation at D_k (its tangent (3.20) vanishes). On Akima's data the
-  // curve found without violations has the middle point of the span after
-  // the run on the run's end (Z[5] = 0, span 4's rule) but Z[6] = 1, against
-  // span 5's rule (Z[6] -> 0). So the rule alone does not get there; each
-  // round is a sweep over the failing spans (collinearity first) that tries,
-  // per span, every step of its parameters: the chord-following ones
-  // (Z[k-1] and Z[k+1] half way to 1 and 0, for the control polygon Y[k] and
-  // X[k+1] half way to 0), the whole way at once, the opposite ones, Z[k]
-  // either way, and the exponents at its two knots raised or lowered. The
-  // step that lowers the score most is taken; if none lowers it, a
-  // chord-following step that keeps it is taken (several are needed before
-  // a straight span is exactly straight), never against an earlier such step
-  // of that parameter, so the search ends. A step that makes a span nearby
-  // slower than RegularSpeed of its Bezier polygon is refused: it would
-  // approach a corner, where the audit counts any curvature as rounding (its
-  // threshold grows as 1 / speed^2) and passes curvatures of 1e50.
-  //
-  // 4. The score: (violations, failing spans), in a second search also the
-  // deficiency of the failing spans (how far their tangents and signed
-  // curvatures are beyond the tolerances), which lets a step count that
-  // brings a span closer to passing. The two end in different local minima
-  // (measured, interpolation: Akima 0 and 1, RPN 15A 1 and 2, titanium 1 and
-  // 0): the second runs when the first leaves violations, and the better
-  // curve is kept (ties: the first).
-  //
-  // 5. Cost: each step tried is a rebuild and an audit of the whole curve,
-  // about 16 per failing span and sweep. A search stops after
-  // EvaluationBudget span audits (2500 steps tried on a 10-point line, 500
-  // on a 50-point one; measured needs: Akima's control polygon 654 steps,
-  // titanium's interpolation 224), after MaxRounds sweeps, or when a sweep
-  // changes nothing. (Two steps at once on a stuck span were tried too: on
-  // these data sets they found nothing the single steps had not, at ten
-  // times the cost.)
-  constexpr double RegularSpeed = 0.02;
-  constexpr double EvaluationBudget = 2.5e4;
-  std::vector<double> kappa(n, std::max(options.Alpha, options.Beta));
-  QQRKnotShape shape = given;
-  auto make = [&](const std::vector<double>& exponents, const QQRKnotShape& knotShape) {
-    return qqrCurve(options, data, context.Knots, exponents, knotShape);
-  };
-  shape = make(kappa, shape)->knotShape();
-  if (options.Interpolate)
-  {
-    shape.X.clear(); // (3.18) makes them from Z
-    shape.Y.clear();
-  }
-  auto build = [&]() -> std::unique_ptr<Curve> { return make(kappa, shape); };
-
-  // Point k + offset, or -1 where the open line has none.
-  auto point = [&](int k, int offset) {
-    const int j = k + offset;
-    return closed ? (j + n) % n : (j < 0 || j >= n ? -1 : j);
-  };
-  auto span = [&](int k, int offset) {
-    const int j = k + offset;
-    return closed ? (j + spans) % spans : (j < 0 || j >= spans ? -1 : j);
-  };
-  // A step: parameter kind (0 kappa, 1 X, 2 Y, 3 Z), index, new value, and
-  // for a chord-following step its direction (+-1; 0 for the others).
-  struct Step
-  {
-    int Kind, Index;
-    double Value;
-    int Chord;
-  };
-  std::array<std::vector<double>*, 4> values{ &kappa, &shape.X, &shape.Y, &shape.Z };
-  std::array<std::vector<int>, 4> direction; // of the chord-following steps so far
-  for (int v = 0; v < 4; ++v)
-  {
-    direction[v].assign(values[v]->size(), 0);
-  }
-  auto stepsOf = [&](int k) {
-    std::vector<Step> steps;
-    auto add = [&](int kind, int index, double target, bool chord) {
-      if (index < 0)
-      {
-        return;
-      }
-      const double now = (*values[kind])[index];
-      const double next = kind == 0 ? target : halfwayTo(now, target);
-      if (next != now)
-      {
-        steps.push_back({ kind, index, next, chord ? (target > now ? 1 : -1) : 0 });
-      }
-      if (kind != 0 && next != target)
-      {
-        steps.push_back({ kind, index, target, 0 }); // the whole way at once
-      }
-    };
-    add(3, span(k, -1), 1.0, true);
-    add(3, span(k, 1), 0.0, true);
-    if (!options.Interpolate)
-    {
-      // D_{-1} = D_0 and D_n = D_{n-1}: Y[0] and X[n-1] of an open line do nothing.
-      add(2, closed || k > 0 ? point(k, 0) : -1, 0.0, true);
-      add(1, closed || k + 1 < n - 1 ? point(k, 1) : -1, 0.0, true);
-      add(1, closed || k < n - 1 ? point(k, 0) : -1, 0.0, false);
-      add(2, point(k, 1), 0.0, false);
-    }
-    add(3, span(k, -1), 0.0, false);
-    add(3, span(k, 1), 1.0, false);
-    add(3, span(k, 0), 0.0, false);
-    add(3, span(k, 0), 1.0, false);
-    for (const int j : { point(k, 0), point(k, 1) })
-    {
-      add(0, j, raisedQQRExponent(kappa[j], options.MaxAlpha), false);
-      add(0, j, loweredQQRExponent(kappa[j], options.MinAlpha), false);
-    }
-    return steps;
-  };
-  // The score: violations, failing spans, and, in the guided search (4.
-  // above), how far the failing spans are from passing (deficiency).
-  using Score = std::tuple<int, int, double>;
-  const Score worst{ std::numeric_limits<int>::max(), std::numeric_limits<int>::max(),
-    std::numeric_limits<double>::infinity() };
-  const DiscreteShape reference = discreteShape(data, context.Options.Tolerances);
-  const double diagonal = boundingBoxDiagonal(data.Points);
-  const double scale = diagonal > 0.0 ? diagonal : 1.0;
-  const double tolerance = context.Options.Tolerances.Curve;
-  const unsigned collinearBit = 1u << static_cast<int>(ShapeCriterion::Collinearity);
-  const unsigned convexBits = (1u << static_cast<int>(ShapeCriterion::ConvexityAtKnot)) |
-    (1u << static_cast<int>(ShapeCriterion::ConvexityOnSpan));
-  // Sum over the spans failing collinearity or convexity (criteria (i),
-  // (ii) of the audit) of the tangent's sine beyond the tolerance, and of the
-  // scale-free signed curvature below -tolerance, on 17 samples per span. A
-  // guide only: the counts come from the audit.
-  bool guided = false;
-  auto deficiency = [&](const QQRSpline& curve, const ShapeAudit& audit) {
-    double sum = 0.0;
-    if (!guided)
-    {
-      return sum;
-    }
-    for (int k = 0; k < spans; ++k)
-    {
-      const unsigned mask = audit.SpanMask[k];
-      if ((mask & (collinearBit | convexBits)) == 0)
-      {
-        continue;
-      }
-      const int next = (k + 1) % n;
-      const double u0 = curve.knots()[k], h = curve.knots()[k + 1] - u0;
-      const bool convexSpan = reference.Convex[k] && reference.Convex[next] &&
-        reference.Binormal[k].dot(reference.Binormal[next]) > 0.0;
-      for (int sample = 0; sample <= 16; ++sample)
-      {
-        const Derivatives d = curve.evaluateOnSpan(k, u0 + h * sample / 16.0, 2);
-        const double speed = d[1].norm();
-        if (!(speed > 0.0))
-        {
-          continue;
-        }
-        const Vec3 bend = d[1].cross(d[2]) / (speed * speed * speed) * scale;
-        for (const int i : { k, next })
-        {
-          if ((mask & collinearBit) && reference.Collinear[i])
-          {
-            sum += std::max(0.0, (d[1] / speed).cross(data.segment(i).normalized()).norm() - tolerance);
-          }
-          const bool atKnot = (sample == 0 && i == k) || (sample == 16 && i == next);
-          if ((mask & convexBits) && reference.Convex[i] && (convexSpan || atKnot))
-          {
-            sum += std::max(0.0, -bend.dot(reference.Binormal[i].normalized()) - tolerance);
-          }
-        }
-      }
-    }
-    return sum;
-  };
-  auto failingSpans = [](const ShapeAudit& audit) {
-    return static_cast<int>(std::count_if(
-      audit.SpanMask.begin(), audit.SpanMask.end(), [](unsigned m) { return m != 0; }));
-  };
-  auto scoreOf = [&](const QQRSpline& curve, const ShapeAudit& audit) {
-    return Score{ audit.violations(), failingSpans(audit), deficiency(curve, audit) };
-  };
-  double evaluations = 0.0; // span audits
-  // The score after a step (and that curve's audit), worst if a span within
-  // two of the step's index turns irregular.
-  auto tryStep = [&](const Step& step, ShapeAudit& audit) {
-    double& value = (*values[step.Kind])[step.Index];
-    const double before = value;
-    value = step.Value;
-    const auto curve = make(kappa, shape);
-    value = before;
-    evaluations += spans;
-    for (int offset = -2; offset <= 2; ++offset)
-    {
-      const int k = span(step.Index, offset);
-      if (k >= 0 && curve->speedRatio(k) < RegularSpeed)
-      {
-        return worst;
-      }
-    }
-    audit = context.audit(*curve, data);
-    return scoreOf(*curve, audit);
-  };
-  auto tighten = [&](const std::vector<char>&) {
-    const std::unique_ptr<QQRSpline> current = make(kappa, shape);
-    ShapeAudit audit = context.audit(*current, data);
-    Score score = scoreOf(*current, audit);
-    std::vector<int> order;
-    for (int k = 0; k < spans; ++k)
-    {
-      if (audit.SpanMask[k] != 0)
-      {
-        order.push_back(k);
-      }
-    }
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-      return (audit.SpanMask[a] & collinearBit) > (audit.SpanMask[b] & collinearBit);
-    });
-    bool changed = false;
-    for (const int k : order)
-    {
-      if (audit.SpanMask[k] == 0 || evaluations > EvaluationBudget)
-      {
-        continue; // fixed by an earlier step of this sweep, or out of budget
-      }
-      Score bestScore = worst, bestChordScore = worst;
-      Step best{}, bestChord{};
-      ShapeAudit bestAudit, bestChordAudit;
-      for (const Step& step : stepsOf(k))
-      {
-        ShapeAudit candidate;
-        const Score s = tryStep(step, candidate);
-        if (s < bestScore)
-        {
-          bestScore = s;
-          best = step;
-          bestAudit = candidate;
-        }
-        if (step.Chord != 0 && direction[step.Kind][step.Index] != -step.Chord && s <= score &&
-          s < bestChordScore)
-        {
-          bestChordScore = s;
-          bestChord = step;
-          bestChordAudit = candidate;
-        }
-      }
-      const bool improves = bestScore < score;
-      if (!improves && bestChordScore == worst)
-      {
-        continue;
-      }
-      const Step& step = improves ? best : bestChord;
-      (*values[step.Kind])[step.Index] = step.Value;
-      if (step.Chord != 0)
-      {
-        direction[step.Kind][step.Index] = step.Chord;
-      }
-      score = improves ? bestScore : bestChordScore;
-      audit = improves ? bestAudit : bestChordAudit;
-      changed = true;
-    }
-    return changed && evaluations <= EvaluationBudget;
-  };
-  const std::vector<double> startKappa = kappa;
-  const QQRKnotShape startShape = shape;
-  auto search = [&](bool guide) {
-    guided = guide;
-    kappa = startKappa;
-    shape = startShape;
-    evaluations = 0.0;
-    for (int v = 0; v < 4; ++v)
-    {
-      direction[v].assign(values[v]->size(), 0);
-    }
-    ShapeAudit audit;
-    std::unique_ptr<Curve> curve =
-      preserveShape(context, data, build, tighten, options.MaxRounds, &audit);
-    return std::make_pair(std::move(curve), std::move(audit));
-  };
-  auto result = search(false);
-  if (!result.second.preserving())
-  {
-    // The guided search (4. above); the better curve is kept.
-    auto second = search(true);
-    const auto first = std::make_pair(result.second.violations(), failingSpans(result.second));
-    if (std::make_pair(second.second.violations(), failingSpans(second.second)) < first)
-    {
-      result = std::move(second);
-    }
-  }
-  built.Spline = std::move(result.first);
-  built.Audit = std::move(result.second);
-  return built;
-}
-
-/// The line's shape as numbers that rotation, translation, scaling and
-/// mirroring keep: its segment lengths (relative to the longest; a closed
-/// line's closing one last), then the cosines of its turning angles.
-std::vector<double> intrinsicKey(const std::vector<Vec3>& points, bool closed)
-{
-  const int n = static_cast<int>(points.size());
-  const int segments = closed ? n : n - 1;
-  std::vector<Vec3> d(segments);
-  double longest = 0.0;
-  for (int i = 0; i < segments; ++i)
-  {
-    d[i] = points[(i + 1) % n] - points[i];
-    longest = std::max(longest, d[i].norm());
-  }
-  std::vector<double> key;
-  for (const Vec3& segment : d)
-  {
-    key.push_back(segment.norm() / longest);
-  }
-  for (int i = closed ? 0 : 1; i < segments; ++i)
-  {
-    const Vec3& before = d[(i + segments - 1) % segments];
-    key.push_back(before.dot(d[i]) / (before.norm() * d[i].norm()));
-  }
-  return key;
-}
-
-/// Whether the line read backwards comes first, comparing intrinsicKey's
-/// numbers in order (a difference below 1e-9 counts as none, so that
-/// rounding does not decide): the automatic search then runs on the reversed
-/// line, and a line and its reverse, moved, scaled or mirrored, get the same
-/// curve. A line that reads the same both ways is taken as given.
-bool reversedComesFirst(const std::vector<Vec3>& points, bool closed)
-{
-  std::vector<Vec3> reversed(points.rbegin(), points.rend());
-  const std::vector<double> forward = intrinsicKey(points, closed);
-  const std::vector<double> backward = intrinsicKey(reversed, closed);
-  for (size_t i = 0; i < forward.size(); ++i)
-  {
-    if (std::abs(forward[i] - backward[i]) > 1e-9)
-    {
-      return backward[i] < forward[i];
-    }
-  }
-  return false;
-}
-
-/**
- * The automatic search visits the failing spans in order and keeps the first
- * best step, so it can end differently on a reversed line: it runs on the
- * orientation that comes first (reversedComesFirst), and the exponents and
- * local parameters it chose are mapped back onto the line as given. Reversal
- * maps point i to n-1-i, the middle point of span k to that of span n-2-k
- * with z -> 1 - z, and swaps x and y (S_k's neighbours trade places).
- */
-BuiltCurve qqrFitEitherWay(const QQROptions& options, const FitContext& context)
-{
-  const CleanPolyline& data = context.Data;
-  const int n = static_cast<int>(data.Points.size());
-  if (!options.Automatic || !reversedComesFirst(data.Points, data.Closed))
-  {
-    return qqrFit(options, context);
-  }
-  auto mirror = [n](int i) { return n - 1 - i; };
-  // The middle point of span k is that of span n - 2 - k reversed (mod n when closed).
-  auto mirrorSpan = [n, &data](int k) {
-    const int j = n - 2 - k;
-    return data.Closed ? (j + n) % n : j;
-  };
-  CleanPolyline reversed = data;
-  std::reverse(reversed.Points.begin(), reversed.Points.end());
-  std::reverse(reversed.SourceIndex.begin(), reversed.SourceIndex.end());
-  // Knots as the forward fit of the reversed line computes them, bit for bit.
-  const std::vector<double> knots = computeKnots(reversed, context.Options.Knots);
-  std::vector<double> values(context.PointValues.size());
-  for (int k = 0; k < static_cast<int>(values.size()); ++k)
-  {
-    const int j = mirrorSpan(k);
-    values[k] = j >= 0 ? 1.0 - context.PointValues[j] : std::numeric_limits<double>::quiet_NaN();
-  }
-  const BuiltCurve found =
-    qqrFit(options, FitContext{ reversed, knots, context.Options, context.CoordinateNoise, values });
-  const auto& chosen = dynamic_cast<const QQRSpline&>(*found.Spline);
-  const QQRKnotShape& shape = chosen.knotShape();
-  const int spans = chosen.numberOfSpans();
-  std::vector<double> kappa(n);
-  QQRKnotShape mapped;
-  mapped.Z.assign(n, std::numeric_limits<double>::quiet_NaN());
-  for (int k = 0; k < n; ++k)
-  {
-    kappa[mirror(k)] = k < spans ? chosen.exponents(k)[0] : chosen.exponents(spans - 1)[1];
-    const int j = mirrorSpan(k);
-    if (j >= 0 && k < static_cast<int>(shape.Z.size()))
-    {
-      mapped.Z[j] = 1.0 - shape.Z[k];
-    }
-  }
-  if (!options.Interpolate)
-  {
-    mapped.X.resize(n);
-    mapped.Y.resize(n);
-    for (int k = 0; k < n; ++k)
-    {
-      mapped.X[mirror(k)] = shape.Y[k];
-      mapped.Y[mirror(k)] = shape.X[k];
-    }
-  }
-  BuiltCurve built;
-  built.Spline = qqrCurve(options, data, context.Knots, kappa, mapped);
-  if (!options.Interpolate)
-  {
-    built.ShapeReference = data; // the control polygon is the shape of reference
-  }
-  built.Audit = context.audit(*built.Spline, data);
-  return built;
-}
-} // namespace
-
 CurveBuilder qqrBuilder(const QQROptions& options)
 {
   checkExponent(options.Alpha, "Alpha");
@@ -1154,12 +794,48 @@ CurveBuilder qqrBuilder(const QQROptions& options)
   if (options.Automatic)
   {
     checkExponent(options.MaxAlpha, "MaxAlpha");
-    if (!(options.MinAlpha > 3.0) || !std::isfinite(options.MinAlpha))
-    {
-      throw std::invalid_argument("qqr: MinAlpha must be a finite number > 3 (C2 joins, Theorem 1 "
-                                  "(5)), got " + std::to_string(options.MinAlpha));
-    }
   }
-  return [options](const FitContext& context) { return qqrFitEitherWay(options, context); };
+  return [options](const FitContext& context) {
+    const CleanPolyline& data = context.Data;
+    const QQRSpline::Local local{ options.X, options.Y, options.Z };
+    // The user's z per point, where given in [0, 1] (NaN elsewhere: Z's value).
+    QQRKnotShape given;
+    for (const double z : context.PointValues)
+    {
+      given.Z.push_back(z >= 0.0 && z <= 1.0 ? z : std::numeric_limits<double>::quiet_NaN());
+    }
+    BuiltCurve built;
+    if (!options.Automatic)
+    {
+      built.Spline = std::make_unique<QQRSpline>(QQRSpline::make(options.Construction,
+        data.Points, context.Knots, data.Closed, options.Alpha, options.Beta, local, given));
+    }
+    else
+    {
+      // alpha = beta at every knot (C2), raised from the larger of Alpha and Beta.
+      const double start = std::max(options.Alpha, options.Beta);
+      auto raise = [&](double alpha) { return raisedQQRExponent(alpha, options.MaxAlpha); };
+      ShapeLadder ladder;
+      ladder.TopLevel = stepsToCap(start, raise);
+      ladder.MaxRounds = options.MaxRounds;
+      ladder.Reach = 3; // a knot's exponent moves the spans on both sides and the global solve
+      ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+        const std::vector<int> perKnot = knotLevels(levels, data.Closed);
+        std::vector<double> kappa(perKnot.size());
+        for (size_t i = 0; i < kappa.size(); ++i)
+        {
+          kappa[i] = raisedTimes(start, perKnot[i], raise);
+        }
+        return std::make_unique<QQRSpline>(QQRSpline::make(
+          options.Construction, data.Points, context.Knots, data.Closed, kappa, local, given));
+      };
+      built = fixedOrAutomatic(true, context, data, ladder);
+    }
+    if (options.Construction == QQRConstruction::ControlPolygon)
+    {
+      built.ShapeReference = data; // the control polygon is the shape of reference
+    }
+    return built;
+  };
 }
 } // namespace shapesplines

@@ -133,6 +133,23 @@ struct QQRKnotShape
   std::vector<double> X, Y, Z;
 };
 
+/// How a qqr curve is made from the points.
+enum class QQRConstruction : int
+{
+  /// The curve through the points: its control points solved (not-a-knot
+  /// ends). At alpha = beta = 4 with the paper's local parameters it is the
+  /// classical cubic spline interpolant, and it converges as points are added.
+  Interpolation = 0,
+  /// Section 3.6's local interpolation: each point's tangent (3.20) and second
+  /// derivative (3.21) from its neighbours only, no system solved. Its
+  /// curvature at the points is about 3x the curve's at alpha = 4 however
+  /// dense they are ((3.21) is (alpha^2 - alpha)/2 times the second
+  /// difference over h^2 at z = 1/2): a design tool, not an estimate.
+  LocalInterpolation = 1,
+  /// The points are the control polygon (approximation, (3.7)).
+  ControlPolygon = 2
+};
+
 /**
  * Cubic B-spline-like curves (Definition 4, (3.7)) in the Bezier form of
  * section 3.4, (3.8): on each span the qqr curve (2.5) with Bezier points
@@ -141,11 +158,13 @@ struct QQRKnotShape
  * for x_i, and its last term A_3 for A_4: typos).
  *
  * Indexing (decision): the curve's knots are the data parameters t_0 < ... <
- * t_N, data point D_k sits at the paper's knot u_{k+2} and is the control point
- * P_k; the open ends double the end points, P_{-1} = P_0 and P_{N+1} = P_N, as
+ * t_N, data point D_k sits at the paper's knot u_{k+2}; for the control
+ * polygon and the local interpolation D_k is the control point P_k and the
+ * open ends double the end points, P_{-1} = P_0 and P_{N+1} = P_N, as
  * section 3.6 does, so that there is one span per pair of neighbouring data
- * points. The knot intervals beyond the data that the formulas need mirror the
- * ones inside (h_{-1} = h_0, h_{-2} = h_1, ...); closed curves wrap around.
+ * points; the interpolation solves for P_{-1}..P_{N+1}. The knot intervals
+ * beyond the data that the formulas need mirror the ones inside (h_{-1} =
+ * h_0, h_{-2} = h_1, ...); closed curves wrap around.
  *
  * Exponents: per span k a left exponent alpha_k and a right one beta_k. The
  * joins are C1 (and C2) when beta_{k-1} = alpha_k (paper's alpha = beta; the
@@ -161,43 +180,25 @@ public:
   using Local = QQRLocalShape;
 
   /**
-   * Approximation: the points are the control polygon (one per knot, the open
-   * ends doubled), the curve is (3.7) with global alpha, beta (>= 2) or one
-   * exponent per point (alpha = beta at that knot; points.size() values).
+   * The curve of the construction through (or on the control polygon of) the
+   * points at the knots, with global alpha, beta (>= 2) and local shape
+   * parameters local (NaN: the paper's choice before Figure 5), or per point
+   * (knotShape; entries that are NaN or vectors that are empty fall back to
+   * local). Any values keep the curve C2 (the joins of Theorem 8 hold for any
+   * x, y, z per knot interval; checked in the tests). The local
+   * interpolation takes x and y from (3.18) and ignores local.X, local.Y:
+   * (3.18) as printed lacks a factor 1/2 in x_{i-1}; with it, Q(u_i) =
+   * P_{i-2} and (3.20) hold (checked in the tests); without it, neither
+   * does. So x_{i-1} = -h_{i-1} z_{i-1} / (2 h_i), y_{i-1} = -h_i (1 -
+   * z_{i-2}) / (2 h_{i-1}).
    */
-  static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, double alpha, double beta, const Local& local = {},
-    const QQRKnotShape& knotShape = {});
-  static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, const std::vector<double>& knotExponents, const Local& local = {});
-
-  /**
-   * Local interpolation of section 3.6: x and y from (3.18) so that Q(u_i) is
-   * the data point, the tangent is (3.20) and the second derivative (3.21); no
-   * system is solved. local.X and local.Y are ignored, local.Z (NaN: the
-   * paper's z_i) is the free bias. (3.18) as printed lacks a factor 1/2 in
-   * x_{i-1}: with it, Q(u_i) = P_{i-2} and (3.20) hold (checked in the tests);
-   * without it, neither does. So x_{i-1} = -h_{i-1} z_{i-1} / (2 h_i),
-   * y_{i-1} = -h_i (1 - z_{i-2}) / (2 h_{i-1}).
-   */
-  static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, double alpha, double beta, const Local& local = {},
-    const QQRKnotShape& knotShape = {});
-  static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, const std::vector<double>& knotExponents, const Local& local = {});
-
-  /**
-   * The same with local shape parameters per point (QQRKnotShape; entries that
-   * are NaN or vectors that are empty fall back to local). Any values keep the
-   * curve C2 with alpha = beta at every knot (the joins of Theorem 8 hold for
-   * any x, y, z per knot interval; checked in the tests).
-   */
-  static QQRSpline approximate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, const std::vector<double>& knotExponents, const Local& local,
-    const QQRKnotShape& knotShape);
-  static QQRSpline interpolate(const std::vector<Vec3>& points, const std::vector<double>& knots,
-    bool closed, const std::vector<double>& knotExponents, const Local& local,
-    const QQRKnotShape& knotShape);
+  static QQRSpline make(QQRConstruction construction, const std::vector<Vec3>& points,
+    const std::vector<double>& knots, bool closed, double alpha, double beta,
+    const Local& local = {}, const QQRKnotShape& knotShape = {});
+  /// The same with one exponent per point (alpha = beta at that knot; points.size() values).
+  static QQRSpline make(QQRConstruction construction, const std::vector<Vec3>& points,
+    const std::vector<double>& knots, bool closed, const std::vector<double>& knotExponents,
+    const Local& local = {}, const QQRKnotShape& knotShape = {});
 
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
   /// "Alpha" per span: the larger of its two exponents.
@@ -219,7 +220,7 @@ private:
   QQRSpline(std::vector<double> knots, bool closed);
   static QQRSpline build(const std::vector<Vec3>& points, const std::vector<double>& knots,
     bool closed, std::vector<std::array<double, 2>> exponents, const Local& local,
-    const QQRKnotShape& knotShape, bool interpolate);
+    const QQRKnotShape& knotShape, QQRConstruction construction);
 
   std::vector<std::array<Vec3, 5>> Bezier;
   std::vector<std::array<double, 2>> Exponents;
@@ -228,55 +229,34 @@ private:
 
 struct QQROptions
 {
-  bool Interpolate = true; ///< local interpolation (3.18)-(3.21); false: the data are the control polygon
-  /// Where the shape audit fails, step the local shape parameters per point
-  /// (from X, Y, Z below) and alpha = beta per knot (from the larger of Alpha
-  /// and Beta, between MinAlpha and MaxAlpha), see qqrBuilder.
+  QQRConstruction Construction = QQRConstruction::Interpolation;
+  /// Where the shape audit fails, raise alpha = beta at the knots of the
+  /// failing spans (preserveShapeAutomatically), from the larger of Alpha
+  /// and Beta up to MaxAlpha.
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
-  /// interpolation takes x and y from (3.18) and ignores X and Y. Automatic:
-  /// the starting values, changed per point where the audit fails.
+  /// interpolation takes x and y from (3.18) and ignores X and Y.
   double X = std::numeric_limits<double>::quiet_NaN();
   double Y = std::numeric_limits<double>::quiet_NaN();
   double Z = std::numeric_limits<double>::quiet_NaN();
-  int MaxRounds = 64; ///< automatic: sweeps over the failing spans at most
-  /// Automatic mode: the exponent at a knot may also be lowered, down to this
-  /// (> 3: C2 joins; alpha < 4 keeps the local interpolation of convex data
-  /// convex, see qqrBuilder). Default 4: below it A1 = alpha t (1-t)^(alpha-1)
-  /// has an unbounded third derivative at the knot, and so has the curve's
-  /// torsion (measured: saturating at the largest double on a conical helix).
-  double MinAlpha = 4.0;
+  int MaxRounds = 64; ///< automatic: rounds at most
 };
 
 /// The exponent after one more round of the automatic mode (capped at maxAlpha).
 double raisedQQRExponent(double alpha, double maxAlpha);
 
 /**
- * Builder of qqr B-spline-like curves for fitPolyline: interpolation or the
- * data as control polygon (its shape reference then being the data polygon),
- * fixed exponents or automatic. The context's PointValues, if any, are the
- * local bias z per point (the start of the automatic search); values outside
- * [0, 1] or NaN take Z's.
- * Automatic: alpha = beta per knot and the local shape parameters per point
- * (QQRKnotShape: z; x and y too for the control polygon). Through
- * preserveShape, each round sweeps the failing spans (collinearity first) and
- * takes per span the step of its parameters that lowers (violations, failing
- * spans; in a second search, run when the first leaves violations, also how
- * far the failing spans are from passing) most: Z[k-1], Z[k+1] half way to 1, 0 (and Y[k], X[k+1] half way to
- * 0), which put span k on its chord, the opposite steps, Z[k] either way, or
- * the exponent at one of its knots raised (raisedQQRExponent, up to MaxAlpha)
- * or lowered towards 3 (down to MinAlpha). Where no step lowers the score, a
- * chord-following step that keeps it is taken. Steps that make a span slower
- * than 1e-3 of its Bezier polygon are refused (speedRatio), so the curve stays
- * regular, and C2. The score never rises: a search's last curve is its best;
- * the better of the two searches is returned. The search runs on whichever
- * orientation of the line comes first by its segment lengths and turning
- * angles, and its choices are mapped back (point i -> n-1-i, z -> 1 - z on
- * the mirrored span, x <-> y): a reversed line gets the same curve.
- * Measured (tests): violations fixed -> automatic, interpolation: Akima 3 -> 0,
- * RPN 15A 3 -> 1, titanium 15 -> 0; control polygon: Akima 1 -> 0, the others
- * 0 already.
+ * Builder of qqr B-spline-like curves for fitPolyline: the construction of
+ * the options (the data as control polygon: its shape reference is then the
+ * data polygon), fixed exponents or automatic. The context's PointValues, if
+ * any, are the local bias z per point; values outside [0, 1] or NaN take Z's.
+ * Automatic: alpha = beta per knot, raised one at a time (raisedQQRExponent)
+ * at the knots of the spans that break the shape, within the bounds of
+ * preserveShapeAutomatically. A large exponent makes a span approach its
+ * Bezier polygon, slowing down at its middle point (speed about
+ * alpha^2 2^-alpha of its polygon's): the speed bound stops it near alpha = 13,
+ * and violations the exponents cannot remove are reported.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines

@@ -127,16 +127,18 @@ ShapeAuditor::ShapeAuditor(
 {
   const double diagonal = boundingBoxDiagonal(data.Points);
   this->Scale = diagonal > 0 ? diagonal : 1.0;
-  this->Audit.SpanMask.assign(std::max(data.numberOfSpans(), 0), 0u);
+  this->Findings.resize(std::max(data.numberOfSpans(), 0));
 }
 
-void ShapeAuditor::fail(ShapeCriterion criterion, int where, int span)
+void ShapeAuditor::fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA,
+  int spanB, double deficiency)
 {
-  this->Failed.emplace(static_cast<int>(criterion), where);
-  if (span >= 0 && span < static_cast<int>(this->Audit.SpanMask.size()))
-  {
-    this->Audit.SpanMask[span] |= 1u << static_cast<int>(criterion);
-  }
+  this->Findings[sample.Span].push_back({ { criterion, where }, { spanA, spanB }, deficiency });
+}
+
+void ShapeAuditor::forget(int span)
+{
+  this->Findings[span].clear();
 }
 
 double ShapeAuditor::signedCurvature(const FrenetFrame& f, int point) const
@@ -164,22 +166,27 @@ void ShapeAuditor::add(const AuditSample& s)
   for (const int i : { j, next })
   {
     const bool onOwnKnot = s.Knot == i;
-    if (shape.Collinear[i] && (inside || onOwnKnot) &&
-      f.Tangent.cross(data.segment(i).normalized()).norm() > tolerance)
+    if (shape.Collinear[i] && (inside || onOwnKnot))
     {
-      this->fail(ShapeCriterion::Collinearity, i, j);
+      const double sine = f.Tangent.cross(data.segment(i).normalized()).norm();
+      if (sine > tolerance)
+      {
+        this->fail(s, ShapeCriterion::Collinearity, i, j, j, sine - tolerance);
+      }
     }
   }
 
   // (iii) coplanarity on the closed span: the osculating plane is the data
   // plane, where the curve bends enough (scale-free) to have one.
-  if (shape.Coplanar[j] && f.Curvature * this->Scale > tolerance)
+  const bool bends = !s.Flat && f.Curvature * this->Scale > tolerance;
+  if (shape.Coplanar[j] && bends)
   {
     const int planeAt = shape.Convex[j] ? j : (shape.Convex[next] ? next : -1);
-    if (planeAt >= 0 &&
-      f.Binormal.cross(shape.Binormal[planeAt].normalized()).norm() > tolerance)
+    const double sine =
+      planeAt >= 0 ? f.Binormal.cross(shape.Binormal[planeAt].normalized()).norm() : 0.0;
+    if (sine > tolerance)
     {
-      this->fail(ShapeCriterion::Coplanarity, j, j);
+      this->fail(s, ShapeCriterion::Coplanarity, j, j, j, sine - tolerance);
     }
   }
 
@@ -189,42 +196,78 @@ void ShapeAuditor::add(const AuditSample& s)
     const int spanBefore = data.Closed || i > 0 ? (i - 1 + spans) % spans : -1;
     const int spanAfter = data.Closed || i < n - 1 ? i % spans : -1;
     // (ii.1) convexity at the knot.
-    if (shape.Convex[i] && this->signedCurvature(f, i) < -tolerance)
+    const double bend = shape.Convex[i] && !s.Flat ? this->signedCurvature(f, i) : 0.0;
+    if (bend < -tolerance)
     {
-      this->fail(ShapeCriterion::ConvexityAtKnot, i, spanBefore);
-      this->fail(ShapeCriterion::ConvexityAtKnot, i, spanAfter);
+      this->fail(s, ShapeCriterion::ConvexityAtKnot, i, spanBefore, spanAfter, -bend - tolerance);
     }
-    // (iv.1) torsion sign at the knot where both neighbouring segments agree.
-    if (spanBefore >= 0 && spanAfter >= 0 && shape.Twisted[spanBefore] &&
-      shape.Twisted[spanAfter] && shape.Torsion[spanBefore] * shape.Torsion[spanAfter] > 0 &&
-      f.Torsion * sign(shape.Torsion[spanAfter]) * this->Scale < -tolerance)
+    // (iv.1) torsion sign at the knot where both neighbouring segments agree,
+    // where the curve bends enough to have an osculating plane (as (iii)):
+    // as the curvature vanishes the torsion is a ratio of vanishing numbers.
+    if (bends && spanBefore >= 0 && spanAfter >= 0 && shape.Twisted[spanBefore] &&
+      shape.Twisted[spanAfter] && shape.Torsion[spanBefore] * shape.Torsion[spanAfter] > 0)
     {
-      this->fail(ShapeCriterion::TorsionSignAtKnot, i, spanBefore);
-      this->fail(ShapeCriterion::TorsionSignAtKnot, i, spanAfter);
+      const double twist = f.Torsion * sign(shape.Torsion[spanAfter]) * this->Scale;
+      if (twist < -tolerance)
+      {
+        this->fail(
+          s, ShapeCriterion::TorsionSignAtKnot, i, spanBefore, spanAfter, -twist - tolerance);
+      }
     }
     return;
   }
 
   // (ii.2) convexity inside a span whose end binormals agree.
-  if (shape.Convex[j] && shape.Convex[next] &&
-    shape.Binormal[j].dot(shape.Binormal[next]) > 0 &&
-    (this->signedCurvature(f, j) < -tolerance || this->signedCurvature(f, next) < -tolerance))
+  if (!s.Flat && shape.Convex[j] && shape.Convex[next] &&
+    shape.Binormal[j].dot(shape.Binormal[next]) > 0)
   {
-    this->fail(ShapeCriterion::ConvexityOnSpan, j, j);
+    const double bend = std::min(this->signedCurvature(f, j), this->signedCurvature(f, next));
+    if (bend < -tolerance)
+    {
+      this->fail(s, ShapeCriterion::ConvexityOnSpan, j, j, j, -bend - tolerance);
+    }
   }
-  // (iv.2) torsion sign inside a twisted span.
-  if (shape.Twisted[j] && f.Torsion * sign(shape.Torsion[j]) * this->Scale < -tolerance)
+  // (iv.2) torsion sign inside a twisted span, where the curve bends.
+  if (bends && shape.Twisted[j])
   {
-    this->fail(ShapeCriterion::TorsionSignOnSpan, j, j);
+    const double twist = f.Torsion * sign(shape.Torsion[j]) * this->Scale;
+    if (twist < -tolerance)
+    {
+      this->fail(s, ShapeCriterion::TorsionSignOnSpan, j, j, j, -twist - tolerance);
+    }
   }
 }
 
 ShapeAudit ShapeAuditor::result() const
 {
-  ShapeAudit audit = this->Audit;
-  for (const auto& [criterion, where] : this->Failed)
+  ShapeAudit audit;
+  const size_t spans = this->Findings.size();
+  audit.SpanMask.assign(spans, 0u);
+  audit.SpanDeficiency.assign(spans, 0.0);
+  for (const auto& found : this->Findings)
   {
-    ++audit.Failures[criterion];
+    for (const Finding& f : found)
+    {
+      for (const int span : f.Spans)
+      {
+        if (span >= 0 && span < static_cast<int>(spans))
+        {
+          audit.SpanMask[span] |= 1u << static_cast<int>(f.Failure.Criterion);
+          audit.SpanDeficiency[span] += f.Deficiency;
+        }
+      }
+      audit.Where.push_back(f.Failure);
+    }
+  }
+  auto key = [](const ShapeFailure& f) { return std::make_pair(static_cast<int>(f.Criterion), f.Where); };
+  std::sort(audit.Where.begin(), audit.Where.end(),
+    [&](const ShapeFailure& a, const ShapeFailure& b) { return key(a) < key(b); });
+  audit.Where.erase(std::unique(audit.Where.begin(), audit.Where.end(),
+                      [&](const ShapeFailure& a, const ShapeFailure& b) { return key(a) == key(b); }),
+    audit.Where.end());
+  for (const ShapeFailure& f : audit.Where)
+  {
+    ++audit.Failures[static_cast<int>(f.Criterion)];
   }
   return audit;
 }

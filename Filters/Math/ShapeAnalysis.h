@@ -7,7 +7,6 @@
 #include "Parameterization.h"
 
 #include <array>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -61,18 +60,35 @@ struct AuditSample
   int Span = 0;
   int Knot = -1; ///< index of the data point this sample sits on, or -1
   FrenetFrame Frame;
+  /// The curvature is within rounding of zero: the frame's normal and
+  /// binormal are only carried over (frenetFrames), so the sample has no
+  /// sign of curvature or torsion to check.
+  bool Flat = false;
 };
 
 /// Marks the knots of samples ordered along a curve: the first sample of each
 /// span, and the last sample of an open curve.
 void markKnots(std::vector<AuditSample>& samples, bool closed);
 
+/// One failure of Definition 1: a criterion at a knot (knot criteria) or on a span.
+struct ShapeFailure
+{
+  ShapeCriterion Criterion = ShapeCriterion::Collinearity;
+  int Where = 0; ///< the knot or span it is counted at
+};
+
 struct ShapeAudit
 {
   /// Per span: bit c set if criterion c fails on the span or at one of its knots.
   std::vector<unsigned> SpanMask;
+  /// Per span: how far its failing samples are beyond the tolerances (summed,
+  /// scale-free), 0 where it passes: progress an automatic mode can measure
+  /// before a violation disappears.
+  std::vector<double> SpanDeficiency;
   /// Distinct failures per criterion (a knot or a span counts once).
   std::array<int, static_cast<int>(ShapeCriterion::Count)> Failures{};
+  /// Every distinct failure, ordered by criterion, then knot or span.
+  std::vector<ShapeFailure> Where;
 
   int violations() const;
   bool preserving() const { return this->violations() == 0; }
@@ -84,26 +100,37 @@ struct ShapeAudit
  * span. Sign conditions fail only when the signed value, made scale-free
  * with the data's bounding-box diagonal, drops below -tolerances.Curve: a
  * vanishing value is not a sign change; likewise only samples whose
- * scale-free curvature exceeds tolerances.Curve have an osculating plane to
- * check. The data and shape must outlive the auditor.
+ * scale-free curvature exceeds tolerances.Curve have an osculating plane, and
+ * a torsion, to check. What a sample finds is kept with its span, so that the samples of
+ * one span can be audited again (forget(), then add()) after the curve
+ * changed there. The data and shape must outlive the auditor.
  */
 class ShapeAuditor
 {
 public:
   ShapeAuditor(const CleanPolyline& data, const DiscreteShape& shape, const ShapeTolerances& tolerances);
   void add(const AuditSample& sample);
+  /// Drops what the samples of span j found.
+  void forget(int span);
   ShapeAudit result() const;
 
 private:
-  void fail(ShapeCriterion criterion, int where, int span);
+  /// A failure found by the samples of one span: the spans it marks, how far beyond tolerance.
+  struct Finding
+  {
+    ShapeFailure Failure;
+    int Spans[2];
+    double Deficiency;
+  };
+  void fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA, int spanB,
+    double deficiency);
   double signedCurvature(const FrenetFrame& frame, int point) const;
 
   const CleanPolyline& Data;
   const DiscreteShape& Shape;
   ShapeTolerances Tolerances;
   double Scale = 1.0;
-  ShapeAudit Audit;
-  std::set<std::pair<int, int>> Failed; ///< (criterion, knot or span)
+  std::vector<std::vector<Finding>> Findings; ///< per span whose samples found them
 };
 
 /// The audit of a whole sequence of samples.

@@ -1,74 +1,77 @@
 #include "TensionQuinticFit.h"
 
+#include "AutomaticShape.h"
+
 #include <algorithm>
+#include <cmath>
 
 namespace shapesplines
 {
 namespace
 {
-std::vector<char> failingSpans(const ShapeAudit& audit, unsigned criteria)
+/// The automatic mode's ladder of parameters: each level halves gamma (and
+/// lambda, C3) at the knots of the span, down to the floor.
+QuinticParameters loweredParameters(
+  const QuinticFitOptions& quintic, const std::vector<int>& levels, bool closed)
 {
-  std::vector<char> failing(audit.SpanMask.size());
-  for (size_t j = 0; j < failing.size(); ++j)
+  const std::vector<int> perKnot = knotLevels(levels, closed);
+  const int knots = static_cast<int>(perKnot.size());
+  QuinticParameters parameters =
+    QuinticParameters::uniform(quintic.Continuity, knots, quintic.Gamma, quintic.Lambda);
+  for (int i = 0; i < knots; ++i)
   {
-    failing[j] = (audit.SpanMask[j] & criteria) != 0;
+    const double factor = std::ldexp(1.0, -perKnot[i]);
+    parameters.Gamma[i] = std::max(quintic.Floor, std::min(quintic.Gamma, 1.0) * factor);
+    parameters.Lambda[i] = std::max(quintic.Floor, std::min(quintic.Lambda, 1.0) * factor);
+    if (perKnot[i] == 0)
+    {
+      parameters.Gamma[i] = quintic.Gamma;
+      parameters.Lambda[i] = quintic.Lambda;
+    }
   }
-  return failing;
+  return parameters;
+}
+
+ShapeLadder quinticLadder(const QuinticFitOptions& quintic)
+{
+  ShapeLadder ladder;
+  ladder.TopLevel = static_cast<int>(std::ceil(std::log2(1.0 / quintic.Floor)));
+  ladder.MaxRounds = quintic.MaxRounds;
+  ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
+  return ladder;
 }
 
 BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quintic)
 {
   const CleanPolyline& data = context.Data;
-  const int count = static_cast<int>(data.Points.size());
-  QuinticParameters parameters =
-    QuinticParameters::uniform(quintic.Continuity, count, quintic.Gamma, quintic.Lambda);
-  auto build = [&]() -> std::unique_ptr<Curve> {
-    auto spline = std::make_unique<TensionQuinticSpline>(
-      TensionQuinticSpline::interpolate(data.Points, context.Knots, parameters, data.Closed));
-    // Lower from the parameters used: (34) may have pulled some towards 1.
-    parameters = spline->parameters();
-    return spline;
+  ShapeLadder ladder = quinticLadder(quintic);
+  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+    return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(
+      data.Points, context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed));
   };
-  return fixedOrPreserved(
-    quintic.Automatic, context, data, build,
-    [&](const std::vector<char>& failing) {
-      return lowerQuinticTension(parameters, failing, data.Closed, quintic.Floor);
-    },
-    quintic.MaxRounds);
+  return fixedOrAutomatic(quintic.Automatic, context, data, ladder);
 }
 } // namespace
 
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitOptions& fit, double coordinateNoise)
+  const FitContext& context)
 {
   QuinticApproximation result;
   result.Knots = uniformKnots(u, closed ? numberOfKnots + 1 : numberOfKnots);
-  result.Polygon = leastSquaresPolygon(points, u, result.Knots, closed);
   CleanPolyline reference;
-  reference.Points = result.Polygon;
+  reference.Points = leastSquaresPolygon(points, u, result.Knots, closed);
   reference.Closed = closed;
-  const DiscreteShape shape = discreteShape(reference, fit.Tolerances);
-  constexpr unsigned torsion = (1u << static_cast<int>(ShapeCriterion::TorsionSignAtKnot)) |
-    (1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan));
-  QuinticParameters parameters =
-    QuinticParameters::uniform(quintic.Continuity, numberOfKnots, quintic.Gamma, quintic.Lambda);
-  for (int round = 0;; ++round)
-  {
-    result.Spline = std::make_unique<TensionQuinticSpline>(
-      TensionQuinticSpline::approximate(points, u, result.Knots, parameters, closed));
-    const ShapeAudit audit = auditCurve(
-      *result.Spline, reference, shape, fit.Tolerances, fit.AuditSubdivisions, coordinateNoise);
-    result.TorsionSignViolations =
-      audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignAtKnot)] +
-      audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignOnSpan)];
-    parameters = result.Spline->parameters();
-    if (!quintic.Automatic || result.TorsionSignViolations == 0 || round == quintic.MaxRounds ||
-      !lowerQuinticTension(parameters, failingSpans(audit, torsion), closed, quintic.Floor))
-    {
-      return result;
-    }
-  }
+  ShapeLadder ladder = quinticLadder(quintic);
+  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+    return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::approximate(
+      points, u, result.Knots, loweredParameters(quintic, levels, closed), closed));
+  };
+  BuiltCurve built = fixedOrAutomatic(quintic.Automatic, context, reference, ladder);
+  result.Spline.reset(static_cast<TensionQuinticSpline*>(built.Spline.release()));
+  result.Audit = std::move(built.Audit);
+  result.Polygon = std::move(reference.Points);
+  return result;
 }
 
 CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
@@ -88,8 +91,7 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
       quintic.ApproximationKnots, closed, highest,
       [&] { return crossValidatedKnotCount(points, u, highest, closed); },
       [&](int knots) {
-        return approximateKeepingTorsionSigns(
-          points, u, knots, closed, quintic, context.Options, context.CoordinateNoise);
+        return approximateKeepingTorsionSigns(points, u, knots, closed, quintic, context);
       });
     if (!approximation)
     {
@@ -97,6 +99,7 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     }
     BuiltCurve built;
     built.Spline = std::move(approximation->Spline);
+    built.Audit = std::move(approximation->Audit);
     CleanPolyline reference;
     reference.Points = std::move(approximation->Polygon);
     reference.Closed = closed;

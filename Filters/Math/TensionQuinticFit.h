@@ -6,13 +6,16 @@
 #include "FitPolyline.h"
 #include "TensionQuinticSpline.h"
 
+#include <optional>
+
 namespace shapesplines
 {
 struct QuinticFitOptions
 {
   QuinticContinuity Continuity = QuinticContinuity::C4;
-  /// Lower the tension only on spans that fail the shape audit, starting
-  /// from 1 (lowerQuinticTension); otherwise Gamma and Lambda at every knot.
+  /// Lower the tension (halve gamma, and lambda for C3, per level) only on
+  /// spans that fail the shape audit, starting from Gamma and Lambda
+  /// (preserveShapeAutomatically); otherwise Gamma and Lambda at every knot.
   bool Automatic = true;
   double Gamma = 1.0;
   double Lambda = 1.0;
@@ -30,26 +33,26 @@ struct QuinticFitOptions
 /// The family's builder for fitPolyline and the filter.
 CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic);
 
-/// A least-squares approximation and the polygon whose torsion signs it keeps.
+/// A least-squares approximation and the polygon whose shape it keeps.
 struct QuinticApproximation
 {
   std::unique_ptr<TensionQuinticSpline> Spline;
   std::vector<double> Knots;  ///< placed uniformly in the data parameter (closed: with the closing one)
   std::vector<Vec3> Polygon;  ///< L*, one vertex per (distinct) knot
-  int TorsionSignViolations = 0; ///< of the spline against L* (criteria iv.1, iv.2)
+  std::optional<ShapeAudit> Audit; ///< against L*, when the automatic mode made it
 };
 
 /**
  * Paper 000, section 5: the spline with numberOfKnots knots (>= 2, uniform in
- * the data parameters u) closest in least squares to the points, whose torsion
- * keeps the sign of the discrete torsion of L*, the least-squares polygon on
- * the same knots. Automatic: the tension starts at 1 and is lowered
- * (lowerQuinticTension) on spans where the sign is wrong. Closed: a closed
- * curve with numberOfKnots distinct knots (>= 3), u with the closing parameter.
+ * the data parameters u) closest in least squares to the points; automatic,
+ * it keeps the shape (Definition 1, torsion signs included) of L*, the
+ * least-squares polygon on the same knots, lowering the tension from 1 on the
+ * spans that break it (preserveShapeAutomatically). Closed: a closed curve
+ * with numberOfKnots distinct knots (>= 3), u with the closing parameter.
  */
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitOptions& fit, double coordinateNoise = 0.0);
+  const FitContext& context);
 } // namespace shapesplines
 
 #endif

@@ -372,35 +372,6 @@ void QuinticParameters::check(int knots) const
   }
 }
 
-bool lowerQuinticTension(QuinticParameters& parameters, const std::vector<char>& failing,
-  bool closed, double floor)
-{
-  const int knots = static_cast<int>(parameters.Gamma.size());
-  const bool c3 = parameters.Continuity == QuinticContinuity::C3;
-  bool lowered = false;
-  auto lower = [&](double& value) {
-    if (value > floor)
-    {
-      value = std::max(floor, 0.5 * value);
-      lowered = true;
-    }
-  };
-  for (size_t span = 0; span < failing.size(); ++span)
-  {
-    if (!failing[span])
-    {
-      continue;
-    }
-    for (const size_t knot : { span, closed ? (span + 1) % knots : span + 1 })
-    {
-      // C3: lambda first (its limit alone straightens the span), then gamma.
-      const bool lambdaLeft = c3 && parameters.Lambda[knot] > floor;
-      lower(lambdaLeft ? parameters.Lambda[knot] : parameters.Gamma[knot]);
-    }
-  }
-  return lowered;
-}
-
 TensionQuinticSpline::TensionQuinticSpline(std::vector<double> knots, bool closed)
   : Curve(std::move(knots), closed)
 {

@@ -31,16 +31,7 @@ struct QuinticParameters
 };
 
 /// Smallest gamma (and lambda) the automatic mode goes down to.
-constexpr double QuinticTensionFloor = 1e-6;
-
-/**
- * The automatic mode's step: halves gamma (C4), or lambda and once it is at
- * the floor gamma (C3), at both knots of every failing span (failing[j] != 0
- * for span j), not below floor. Returns false when nothing could be lowered
- * any more.
- */
-bool lowerQuinticTension(QuinticParameters& parameters, const std::vector<char>& failing,
-  bool closed, double floor = QuinticTensionFloor);
+constexpr double QuinticTensionFloor = 1.0 / 256.0;
 
 /**
  * A space curve s(x) = C(t(x)) built from the tensioned quintic B-splines:

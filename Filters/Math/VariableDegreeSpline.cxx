@@ -1,5 +1,7 @@
 #include "VariableDegreeSpline.h"
 
+#include "AutomaticShape.h"
+
 #include "SparseSolve.h"
 #include "TensionQuinticSpline.h" // uniformKnots, leastSquaresPolygon (psi of section 4.2), crossValidatedKnotCount
 
@@ -467,7 +469,7 @@ std::vector<SpanParameter> VariableDegreeSpline::spanParameters() const
 
 double raisedDegree(double degree, double maxDegree)
 {
-  return std::max(degree, std::min(std::ceil(1.5 * degree), maxDegree));
+  return std::max(degree, std::min(std::ceil(2.0 * degree), maxDegree));
 }
 
 namespace
@@ -489,60 +491,41 @@ VariableDegreeParameters parametersFor(
   return p;
 }
 
-/// Raises the degrees at both knots of every failing span (and, where they
-/// are at the cap, at the knots next to them); false when nothing rose.
-bool raiseFailing(std::vector<double>& degrees, const std::vector<char>& failing, bool closed,
-  double maxDegree)
+/// The degrees per knot at the ladder's levels per span, from the start degrees.
+std::vector<double> degreesAt(const std::vector<double>& start, const std::vector<int>& levels,
+  bool closed, double maxDegree)
 {
-  const int knots = static_cast<int>(degrees.size());
-  std::vector<char> raise(knots, 0);
-  auto mark = [&](int i) {
-    if (i >= 0 && i < knots)
-    {
-      raise[i] = 1;
-    }
-    else if (closed)
-    {
-      raise[((i % knots) + knots) % knots] = 1;
-    }
-  };
-  for (int j = 0; j < static_cast<int>(failing.size()); ++j)
+  const std::vector<int> perKnot = knotLevels(levels, closed);
+  std::vector<double> degrees(start.size());
+  for (size_t i = 0; i < start.size(); ++i)
   {
-    if (!failing[j])
-    {
-      continue;
-    }
-    const int right = closed ? (j + 1) % knots : j + 1;
-    const bool capped = degrees[j] >= maxDegree && degrees[right] >= maxDegree;
-    mark(capped ? j - 1 : j);
-    mark(capped ? j + 2 : j + 1);
+    degrees[i] = raisedTimes(start[i], perKnot[i], [&](double k) { return raisedDegree(k, maxDegree); });
   }
-  bool raised = false;
-  for (int i = 0; i < knots; ++i)
-  {
-    const double next = raise[i] ? raisedDegree(degrees[i], maxDegree) : degrees[i];
-    raised = raised || next > degrees[i];
-    degrees[i] = next;
-  }
-  return raised;
+  return degrees;
+}
+
+int topLevel(const std::vector<double>& start, double maxDegree)
+{
+  return stepsToCap(*std::min_element(start.begin(), start.end()),
+    [&](double k) { return raisedDegree(k, maxDegree); });
 }
 
 BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOptions& options,
-  std::vector<double> degrees)
+  const std::vector<double>& startDegrees)
 {
   const CleanPolyline& data = context.Data;
-  auto build = [&]() -> std::unique_ptr<Curve> {
-    return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::interpolate(
-      data.Points, context.Knots, data.Closed,
+  ShapeLadder ladder;
+  ladder.TopLevel = topLevel(startDegrees, options.MaxDegree);
+  ladder.MaxRounds = options.MaxRounds;
+  ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
+  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+    const std::vector<double> degrees = degreesAt(startDegrees, levels, data.Closed, options.MaxDegree);
+    return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::interpolate(data.Points,
+      context.Knots, data.Closed,
       parametersFor(degrees, options, !data.Closed && options.Ends == VariableDegreeEnds::Natural),
       options.Ends));
   };
-  return fixedOrPreserved(
-    options.Automatic, context, data, build,
-    [&](const std::vector<char>& failing) {
-      return raiseFailing(degrees, failing, data.Closed, options.MaxDegree);
-    },
-    options.MaxRounds);
+  return fixedOrAutomatic(options.Automatic, context, data, ladder);
 }
 
 BuiltCurve approximateData(const FitContext& context, const VariableDegreeOptions& options,
@@ -556,38 +539,30 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   CleanPolyline psi;
   psi.Points = leastSquaresPolygon(context.Data.Points, u, knots, closed);
   psi.Closed = closed;
-  std::vector<double> degrees(knotCount, startDegree);
-  std::vector<double> weights(knotCount, 0.0);
+  const std::vector<double> start(knotCount, startDegree);
   const bool local = options.Mode == VariableDegreeMode::ApproximateLocal;
-  // An anchor's first weight counts like the points of one span; it grows
-  // 4x a round up to a million times that (then the curve all but passes through psi).
+  // The local scheme also pulls the curve towards psi at the knots of raised
+  // spans: an anchor's first weight counts like the points of one span, and
+  // it grows 4x a level up to a million times that (then the curve all but
+  // passes through psi).
   const double firstWeight = static_cast<double>(context.Data.Points.size()) / spans;
-  auto build = [&]() -> std::unique_ptr<Curve> {
+  ShapeLadder ladder;
+  ladder.TopLevel = topLevel(start, options.MaxDegree);
+  ladder.MaxRounds = options.MaxRounds;
+  ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
+  ladder.Uniform = !local; // the global scheme: every degree together (Theorem 4)
+  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+    const std::vector<int> perKnot = knotLevels(levels, closed);
+    std::vector<double> weights(knotCount, 0.0);
+    for (int i = 0; i < knotCount && local; ++i)
+    {
+      weights[i] = perKnot[i] == 0 ? 0.0 : firstWeight * std::min(std::pow(4.0, perKnot[i] - 1), 1e6);
+    }
     return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(context.Data.Points,
-      u, knots, closed, parametersFor(degrees, options, false), weights, psi.Points));
+      u, knots, closed, parametersFor(degreesAt(start, levels, closed, options.MaxDegree), options, false),
+      weights, psi.Points));
   };
-  auto tighten = [&](const std::vector<char>& failing) {
-    if (!local)
-    {
-      // The global scheme: every degree together (Theorem 4), as if every span failed.
-      return raiseFailing(degrees, std::vector<char>(failing.size(), 1), closed, options.MaxDegree);
-    }
-    bool raised = raiseFailing(degrees, failing, closed, options.MaxDegree);
-    for (int j = 0; j < static_cast<int>(failing.size()); ++j)
-    {
-      for (const int i : { j, (j + 1) % knotCount })
-      {
-        const double next = std::min(weights[i] == 0.0 ? firstWeight : 4.0 * weights[i], 1e6 * firstWeight);
-        if (failing[j] && next > weights[i])
-        {
-          weights[i] = next;
-          raised = true;
-        }
-      }
-    }
-    return raised;
-  };
-  BuiltCurve built = fixedOrPreserved(options.Automatic, context, psi, build, tighten, options.MaxRounds);
+  BuiltCurve built = fixedOrAutomatic(options.Automatic, context, psi, ladder);
   built.ShapeReference = std::move(psi);
   return built;
 }
@@ -624,7 +599,7 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
         degrees[i] = value;
       }
     }
-    return interpolateData(context, capped, std::move(degrees));
+    return interpolateData(context, capped, degrees);
   };
 }
 } // namespace shapesplines

@@ -120,7 +120,7 @@ struct VariableDegreeOptions
   double Degree = 5.0; ///< starting (automatic) or fixed degree
   /// The polygon limit is slow (distance ~ 1/k): Akima's flat run needs
   /// degree 200 at the knots where it ends to stay straight within 1e-3.
-  double MaxDegree = 200.0;
+  double MaxDegree = 1000.0;
   /// lambda_i = Lambda (5 / k_i)^3 when ScaleLambdaWithDegree, else Lambda;
   /// with natural ends the two knots next to each end keep Lambda, so that
   /// s'' = s''' = 0 there stays well-posed (condition 22 instead of 1.7e8

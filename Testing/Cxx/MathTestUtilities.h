@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <random>
+#include <string>
 #include <vector>
 
 namespace shapesplines::test
@@ -108,6 +110,167 @@ inline RelativeErrors interiorErrors(
     errors.Torsion = std::max(errors.Torsion, std::abs(sampled.Frames[k].Torsion - torsion) / torsion);
   }
   return errors;
+}
+/// Gaussian noise of standard deviation sigma added to every coordinate.
+inline std::vector<Vec3> withNoise(std::vector<Vec3> points, double sigma, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  for (Vec3& p : points)
+  {
+    p += Vec3(noise(random), noise(random), noise(random));
+  }
+  return points;
+}
+
+/// count points of a helix a = 1, b = 0.25 at perTurn points per turn, with
+/// noise of the radius' fraction `noise`.
+inline std::vector<Vec3> noisyHelixPoints(int count, double perTurn, double noise, unsigned seed)
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i)
+  {
+    const double t = 2.0 * Pi * i / perTurn;
+    points.emplace_back(std::cos(t), std::sin(t), 0.25 * t);
+  }
+  return withNoise(points, noise, seed);
+}
+
+/// count points of one period of the trefoil knot (an open line: the period
+/// is not closed), with noise of a fraction of its size 3.
+inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned seed)
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i)
+  {
+    const double t = 2.0 * Pi * i / count;
+    points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t),
+      -std::sin(3.0 * t));
+  }
+  return withNoise(points, 3.0 * noise, seed);
+}
+
+/// A random 3D polyline: steps of random direction and length 0.5 to 1.5.
+inline std::vector<Vec3> randomWalk(int count, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::uniform_real_distribution<double> length(0.5, 1.5);
+  std::vector<Vec3> points = { Vec3::Zero() };
+  while (static_cast<int>(points.size()) < count)
+  {
+    const Vec3 direction(normal(random), normal(random), normal(random));
+    points.push_back(points.back() + length(random) * direction.normalized());
+  }
+  return points;
+}
+
+/// A 3D staircase: runs of perRun equal steps along the axes, each run
+/// turning 90 degrees from the last (collinear points inside every run).
+inline std::vector<Vec3> staircase(int runs, int perRun, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> length(1.0, 3.0);
+  std::vector<Vec3> points = { Vec3::Zero() };
+  int axis = -1;
+  for (int r = 0; r < runs; ++r)
+  {
+    axis = (axis + 1 + static_cast<int>(random() % 2)) % 3;
+    Vec3 direction = Vec3::Zero();
+    direction[axis] = random() % 2 ? 1.0 : -1.0;
+    const double step = length(random) / perRun;
+    for (int k = 0; k < perRun; ++k)
+    {
+      points.push_back(points.back() + step * direction);
+    }
+  }
+  return points;
+}
+
+/// A named line of the data users have, generated here, none tuned to.
+struct UsersData
+{
+  std::string Name;
+  std::vector<Vec3> Points;
+};
+
+/**
+ * Noisy helices (25 to 200 points, 0.1% to 1% noise), noisy trefoils, random
+ * 3D polylines and staircases.
+ */
+inline std::vector<UsersData> usersData()
+{
+  std::vector<UsersData> lines;
+  unsigned seed = 1;
+  for (const int count : { 25, 50, 100, 200 })
+  {
+    for (const double noise : { 0.001, 0.005, 0.01 })
+    {
+      lines.push_back({ "helix " + std::to_string(count) + " points, noise " + std::to_string(noise),
+        noisyHelixPoints(count, 16.0, noise, seed++) });
+    }
+  }
+  for (const int count : { 40, 100 })
+  {
+    for (const double noise : { 0.001, 0.01 })
+    {
+      lines.push_back({ "trefoil " + std::to_string(count) + " points, noise " + std::to_string(noise),
+        noisyTrefoilPoints(count, noise, seed++) });
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    lines.push_back({ "random walk " + std::to_string(k), randomWalk(60, seed++) });
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    lines.push_back({ "staircase " + std::to_string(k), staircase(6, 4, seed++) });
+  }
+  return lines;
+}
+
+/// What the automatic modes bound (ShapeBounds), measured on a fit.
+struct BoundFigures
+{
+  /// Largest curvature on the samples over the reference polygon's largest discrete curvature.
+  double Curvature = 0.0;
+  /// Lowest |s'| (64 samples a span) over the span's chord speed.
+  double Speed = 1.0;
+  bool StraightRuns = false;
+};
+
+inline BoundFigures boundFigures(const FittedPolyline& fit)
+{
+  BoundFigures figures;
+  double largest = 0.0;
+  for (const FrenetFrame& frame : sampleFit(fit).Frames)
+  {
+    largest = std::max(largest, frame.Curvature * fit.Scale); // normalised, as the shape
+  }
+  const double turn = *std::max_element(fit.Shape.Curvature.begin(), fit.Shape.Curvature.end());
+  figures.Curvature = largest / std::max(turn, 1e-300);
+  figures.StraightRuns =
+    std::any_of(fit.Shape.Collinear.begin(), fit.Shape.Collinear.end(), [](char c) { return c; });
+  const Curve& curve = *fit.Spline;
+  const auto& knots = curve.knots();
+  for (int j = 0; j < curve.numberOfSpans(); ++j)
+  {
+    const double h = knots[j + 1] - knots[j];
+    const double chord =
+      (curve.evaluateOnSpan(j, knots[j + 1], 0)[0] - curve.evaluateOnSpan(j, knots[j], 0)[0]).norm() / h;
+    for (int s = 0; s <= 64; ++s)
+    {
+      const double speed = curve.evaluateOnSpan(j, knots[j] + h * s / 64.0, 1)[1].norm();
+      figures.Speed = std::min(figures.Speed, chord > 0.0 ? speed / chord : 1.0);
+    }
+  }
+  return figures;
+}
+
+/// Whether a fit keeps the automatic modes' bounds: no degenerate curve.
+inline bool withinBounds(const BoundFigures& figures)
+{
+  return figures.Curvature <= (figures.StraightRuns ? 1e4 : 1e3) && figures.Speed >= 1e-3;
 }
 } // namespace shapesplines::test
 

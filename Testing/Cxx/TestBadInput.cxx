@@ -59,6 +59,7 @@ std::vector<SplineFilter> Filters()
                    vtkSmartPointer<vtkQQRSplineFilter>::New()); } },
     { "QQRFixedCustom", [] {
        auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+       filter->SetModeToLocalInterpolation();
        filter->AutomaticOff();
        filter->SetAlpha(7.0);
        filter->SetBeta(7.0);

@@ -124,14 +124,16 @@ TEST(GeneralizedCubicSplineFilter, OutOfRangeSettingsAreClampedOrAdaptedWithAWar
 
 TEST(GeneralizedCubicSplineFilter, AutomaticModeReachingItsCapReportsTheViolationsLeft)
 {
-  // A cap of 1 cannot straighten Akima's flat run: the violations stay counted, not hidden.
+  // A cap of 1 cannot straighten Akima's flat run: the violations stay
+  // counted, not hidden, on the best curve met (tension 1 does not remove
+  // more than 0 does, so the start's is kept).
   const auto data = ReadData("akima.vtp");
   const FilterRun capped = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
     f->SetMaxTension(1.0);
   });
   EXPECT_GT(CellArray(capped.Output, "ShapeViolations")->GetTuple1(0), 0);
   EXPECT_EQ(CellArray(capped.Output, "ShapePreserving")->GetTuple1(0), 0);
-  EXPECT_EQ(CellArray(capped.Output, "MaxTension")->GetTuple1(0), 1.0);
+  EXPECT_LE(CellArray(capped.Output, "MaxTension")->GetTuple1(0), 1.0);
   ExpectAllFinite(capped.Output);
 }
 

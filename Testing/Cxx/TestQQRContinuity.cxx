@@ -74,7 +74,7 @@ TEST(QQRTheorem13, ZeroLocalParametersGiveFrenetFrameContinuityWhereThePapersDoN
   knots.pop_back();
   for (const double alpha : { 4.0, 6.0, 9.0 })
   {
-    const auto frenet = QQRSpline::approximate(points, knots, false, alpha, alpha, { 0.0, 0.0, 0.5 });
+    const auto frenet = QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, alpha, alpha, { 0.0, 0.0, 0.5 });
     const Jumps fc = jumpsAtKnots(frenet);
     std::printf("alpha = beta = %g, x = y = 0: jumps of frame %.1e, curvature %.1e, torsion %.1e, "
                 "third derivative %.2f\n",
@@ -84,7 +84,7 @@ TEST(QQRTheorem13, ZeroLocalParametersGiveFrenetFrameContinuityWhereThePapersDoN
     EXPECT_LT(fc.Torsion, 1e-8) << alpha;
     EXPECT_GT(fc.Third, 1e-3) << alpha; // not C3: the torsion's continuity is Theorem 13's
   }
-  const auto cubic = QQRSpline::approximate(points, knots, false, 4.0, 4.0);
+  const auto cubic = QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, 4.0, 4.0);
   const Jumps c2 = jumpsAtKnots(cubic);
   std::printf("the paper's cubic B-spline parameters: torsion jumps %.2f of its largest value\n", c2.Torsion);
   EXPECT_LT(c2.Curvature, 1e-9); // C2
@@ -107,7 +107,7 @@ TEST(QQRTheorem13, ConvexControlPolygonsGiveConvexCurves)
   {
     for (const double z : { 0.2, 0.5, 0.8 })
     {
-      const auto curve = QQRSpline::approximate(points, knots, false, alpha, alpha, { 0.0, 0.0, z });
+      const auto curve = QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, alpha, alpha, { 0.0, 0.0, z });
       // The doubled end points make the curvature vanish at the ends: strictly
       // positive inside, zero up to rounding on the end spans.
       double inside = 1e300, ends = 1e300;

@@ -757,7 +757,7 @@ TEST(QQRSpline, BezierFormEqualsTheBSplineCurveAndReducesToTheCubicBSplineCurve)
          { 3.5, 9.0, QQRLocalShape{ 0.1, 0.3, 0.6 } }, { 4.0, 4.0, QQRLocalShape{} },
          { 30.0, 30.0, QQRLocalShape{} } })
   {
-    const QQRSpline curve = QQRSpline::approximate(points, t, false, alpha, beta, local);
+    const QQRSpline curve = QQRSpline::make(QQRConstruction::ControlPolygon, points, t, false, alpha, beta, local);
     // (3.6) with the control points P_{-1} = P_0, P_0..P_N, P_{N+1} = P_N.
     const std::vector<double> h = Intervals(u);
     QQRLocalParameters parameters = cubicLocalParameters(h);
@@ -828,7 +828,7 @@ TEST(QQRSpline, LocalInterpolationPassesThroughTheDataWithTangent320AndCurvature
         k = exponent(random);
       }
       kappa[2] = 4.0;
-      const QQRSpline curve = QQRSpline::interpolate(points, t, closed, kappa, QQRLocalShape{ NAN, NAN, fixedZ });
+      const QQRSpline curve = QQRSpline::make(QQRConstruction::LocalInterpolation, points, t, closed, kappa, QQRLocalShape{ NAN, NAN, fixedZ });
       auto dh = [&](int j) {
         j = closed ? (j % spans + spans) % spans : j;
         return t[j + 1] - t[j];
@@ -869,7 +869,7 @@ TEST(QQRSpline, PerKnotExponentsKeepC2ForTheControlPolygonCurveOpenAndClosed)
     {
       k = exponent(random);
     }
-    const QQRSpline curve = QQRSpline::approximate(points, t, closed, kappa);
+    const QQRSpline curve = QQRSpline::make(QQRConstruction::ControlPolygon, points, t, closed, kappa);
     for (int k = closed ? 0 : 1; k < spans; ++k)
     {
       EXPECT_EQ(curve.exponents(k)[0], kappa[k]);
@@ -932,8 +932,8 @@ TEST(QQRSpline, PerPointLocalParametersKeepC2AndTheInterpolation)
       // Z[4] = 1 with Z[5] = 0 would stop the interpolation at point 5.
       shape.Z[4] = 0.9;
       const QQRSpline curve = interpolate
-        ? QQRSpline::interpolate(points, t, closed, kappa, QQRLocalShape{}, shape)
-        : QQRSpline::approximate(points, t, closed, kappa, QQRLocalShape{}, shape);
+        ? QQRSpline::make(QQRConstruction::LocalInterpolation, points, t, closed, kappa, QQRLocalShape{}, shape)
+        : QQRSpline::make(QQRConstruction::ControlPolygon, points, t, closed, kappa, QQRLocalShape{}, shape);
       const QQRKnotShape& used = curve.knotShape();
       for (int j = 0; j < n; ++j)
       {
@@ -978,8 +978,8 @@ TEST(QQRSpline, LocalParametersStraightenAkimasRun)
       BuiltCurve built;
       const std::vector<double> kappa(context.Data.Points.size(), alpha);
       built.Spline = std::make_unique<QQRSpline>(interpolate
-          ? QQRSpline::interpolate(context.Data.Points, context.Knots, false, kappa, {}, shape)
-          : QQRSpline::approximate(context.Data.Points, context.Knots, false, kappa, {}, shape));
+          ? QQRSpline::make(QQRConstruction::LocalInterpolation, context.Data.Points, context.Knots, false, kappa, {}, shape)
+          : QQRSpline::make(QQRConstruction::ControlPolygon, context.Data.Points, context.Knots, false, kappa, {}, shape));
       if (!interpolate)
       {
         built.ShapeReference = context.Data;
@@ -1015,7 +1015,7 @@ TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
   std::mt19937 random(3);
   const std::vector<Vec3> points = RandomPoints(6, random);
   const std::vector<double> t = RandomKnots(6, random, 1.0);
-  const QQRSpline curve = QQRSpline::interpolate(points, t, false, 4.0, 4.0);
+  const QQRSpline curve = QQRSpline::make(QQRConstruction::LocalInterpolation, points, t, false, 4.0, 4.0);
   const Vec3 start = curve.evaluate(t.front(), 1)[1];
   const Vec3 end = curve.evaluate(t.back(), 1)[1];
   EXPECT_LT(start.normalized().cross((points[1] - points[0]).normalized()).norm(), 1e-14);
@@ -1028,7 +1028,7 @@ namespace
 FittedPolyline Fit(const std::vector<Vec3>& points, bool interpolate, bool automatic, double alpha = 4.0)
 {
   QQROptions options;
-  options.Interpolate = interpolate;
+  options.Construction = interpolate ? QQRConstruction::LocalInterpolation : QQRConstruction::ControlPolygon;
   options.Automatic = automatic;
   options.Alpha = options.Beta = alpha;
   return fitPolyline(points, FitOptions{}, qqrBuilder(options));
@@ -1065,7 +1065,7 @@ TEST(QQRSpline, RaisingAlphaBendsConvexDataTheWrongWayInTheMiddleOfEachSpan)
   }
   for (const double alpha : { 3.5, 4.0, 6.0, 20.0 })
   {
-    const QQRSpline curve = QQRSpline::interpolate(points, knots, false, alpha, alpha);
+    const QQRSpline curve = QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, alpha, alpha);
     double lowest = 1e300;
     for (int s = 0; s <= 64; ++s)
     {
@@ -1094,87 +1094,33 @@ TEST(QQRSpline, RaisingAlphaBendsConvexDataTheWrongWayInTheMiddleOfEachSpan)
 
 TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
 {
-  // The automatic mode steps the local parameters per point (QQRKnotShape)
-  // and the exponents per knot (see qqrBuilder). Measured violations, fixed
-  // alpha = beta = 4 with the paper's x, y, z -> automatic:
-  //   Akima        interpolation 3 -> 0, control polygon 1 -> 0
-  //   RPN 15A      interpolation 3 -> 1, control polygon 0 -> 0
-  //   titanium     interpolation 15 -> 0, control polygon 0 -> 0
-  // (the search runs on whichever orientation comes first, see qqrBuilder:
-  // titanium's is the reversed one, where it reaches 0; as given it ends at 1)
-  // (before the local parameters moved, the automatic mode stayed at the
-  // fixed counts: raising alpha never helped).
-  //
-  // Why not zero for the interpolation of RPN 15A: spans 4, 5, 6 (D_4 to D_7)
-  // must all turn right, but the data turn by 0.3 degrees at D_4, 29 at D_5
-  // and 1.5 at D_6: a nearly straight approach into a sharp bend that
-  // flattens out. The tangent (3.20) and second derivative (3.21) at a knot
-  // are fixed by the z on its two sides, and no choice keeps the three spans
-  // between those knots convex together: measured over a grid of
-  // Z[3..6] in {0, 0.1, ..., 1} with exponents {3.125, 4, 6, 10} at D_4, D_5,
-  // D_6 (940,000 curves), the regular curves have at best one violation,
-  // convexity inside span 4, 5 or 6 (whichever the parameters sacrifice),
-  // never none; a coordinate descent over all Z and exponents from 100 random
-  // starts found none below one either.
-  struct Expected
+  // Every construction: the automatic exponents never leave more violations
+  // than alpha = beta = 4 (the best curve met is kept), the curve stays
+  // regular (the speed bound) and C2 (alpha = beta at every knot).
+  for (const auto& [name, points] : std::vector<std::pair<const char*, std::vector<Vec3>>>{
+         { "Akima", akima() }, { "RPN 15A", rpn15a() }, { "titanium", titanium() } })
   {
-    int Fixed, Automatic;
-  };
-  const std::vector<std::tuple<const char*, std::vector<Vec3>, Expected, Expected>> sets = {
-    { "Akima", akima(), { 3, 0 }, { 1, 0 } }, { "RPN 15A", rpn15a(), { 3, 1 }, { 0, 0 } },
-    { "titanium", titanium(), { 15, 0 }, { 0, 0 } }
-  };
-  for (const auto& [name, points, interpolation, controlPolygon] : sets)
-  {
-    for (const bool interpolate : { true, false })
+    for (const QQRConstruction construction : { QQRConstruction::Interpolation,
+           QQRConstruction::LocalInterpolation, QQRConstruction::ControlPolygon })
     {
-      const Expected expected = interpolate ? interpolation : controlPolygon;
-      const FittedPolyline fixed = Fit(points, interpolate, false);
-      const FittedPolyline automatic = Fit(points, interpolate, true);
+      QQROptions options;
+      options.Construction = construction;
+      options.Automatic = false;
+      const FittedPolyline fixed = fitPolyline(points, FitOptions{}, qqrBuilder(options));
+      options.Automatic = true;
+      const FittedPolyline automatic = fitPolyline(points, FitOptions{}, qqrBuilder(options));
       const auto& spline = dynamic_cast<const QQRSpline&>(*automatic.Spline);
-      const auto& paper = dynamic_cast<const QQRSpline&>(*fixed.Spline).knotShape();
-      const QQRKnotShape& chosen = spline.knotShape();
-      std::printf("%s, %s: alpha = beta = 4 fixed %d violations, automatic %d (largest curvature "
-                  "%.3g, fixed %.3g)\n  changed from the paper's:",
-        name, interpolate ? "interpolation" : "control polygon", fixed.Audit.violations(),
-        automatic.Audit.violations(), LargestCurvature(automatic), LargestCurvature(fixed));
-      for (int j = 0; j < static_cast<int>(chosen.Z.size()); ++j)
-      {
-        if (std::abs(chosen.Z[j] - paper.Z[j]) > 1e-12)
-        {
-          std::printf(" Z[%d] %.3g->%.3g", j, paper.Z[j], chosen.Z[j]);
-        }
-        if (!interpolate && std::abs(chosen.X[j] - paper.X[j]) > 1e-12)
-        {
-          std::printf(" X[%d] %.3g->%.3g", j, paper.X[j], chosen.X[j]);
-        }
-        if (!interpolate && std::abs(chosen.Y[j] - paper.Y[j]) > 1e-12)
-        {
-          std::printf(" Y[%d] %.3g->%.3g", j, paper.Y[j], chosen.Y[j]);
-        }
-      }
-      for (int k = 0; k < spline.numberOfSpans(); ++k)
-      {
-        for (const int side : { 0, 1 })
-        {
-          if (spline.exponents(k)[side] != 4.0 && (side == 0 || k + 1 == spline.numberOfSpans()))
-          {
-            std::printf(" alpha[%d] %g", k + side, spline.exponents(k)[side]);
-          }
-        }
-      }
-      std::printf("\n");
-      EXPECT_EQ(fixed.Audit.violations(), expected.Fixed) << name;
-      EXPECT_EQ(automatic.Audit.violations(), expected.Automatic) << name;
+      std::printf("%s, construction %d: alpha = beta = 4 %d violations, automatic %d (largest "
+                  "alpha %g, curvature %.3g, fixed %.3g)\n",
+        name, static_cast<int>(construction), fixed.Audit.violations(), automatic.Audit.violations(),
+        LargestAlpha(automatic), LargestCurvature(automatic), LargestCurvature(fixed));
       EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << name;
-      // The automatic curve stays regular: no span slower than 1e-3 of its Bezier polygon.
       for (int k = 0; k < spline.numberOfSpans(); ++k)
       {
         EXPECT_GE(spline.speedRatio(k), 1e-3) << name << " span " << k;
       }
-      // And C2 (alpha = beta at every knot, any local parameters); the jumps
-      // relative to the largest derivative of that order at the knots (a
-      // straight run has second derivatives of rounding size).
+      // The jumps relative to the largest derivative of that order at the
+      // knots (a straight run has second derivatives of rounding size).
       std::array<double, 3> scale{}, jump{};
       for (int k = 1; k < spline.numberOfSpans(); ++k)
       {
@@ -1203,9 +1149,10 @@ TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
       EXPECT_GE(fit.Audit.Failures[int(ShapeCriterion::Collinearity)], 1) << alpha;
     }
   }
-  // What the guard prevents: raised far enough, RPN 15A "passes" the audit only
-  // because the curve has almost stopped mid-span (speed 1e-17 of the chord's)
-  // and the audit counts any curvature there as rounding.
+  // Why the automatic mode bounds the speed: raised far enough, RPN 15A
+  // "passes" the audit only because the curve has almost stopped mid-span
+  // (speed 1e-17 of the chord's) and the audit counts any curvature there as
+  // rounding.
   const FittedPolyline stalled = Fit(rpn15a(), true, false, 68.0);
   const auto& spline = dynamic_cast<const QQRSpline&>(*stalled.Spline);
   double slowest = 1.0;
@@ -1219,54 +1166,130 @@ TEST(QQRSpline, ShapeDataSetsFixedAndAutomatic)
   EXPECT_LT(slowest, 1e-12);
 }
 
-TEST(QQRSpline, HelixCurvatureAndTorsion)
+TEST(QQRSpline, InterpolationIsTheCubicSplineAtAlphaFour)
 {
-  // Control polygon (alpha = beta = 4: the cubic B-spline of the data): second
-  // order. Local interpolation: (3.20) is consistent only for alpha = 4 and
-  // (3.21) then gives 3x the curvature at the knots (4 (alpha - 1) / alpha on
-  // uniform knots): the error tends to 2, it does not converge.
-  for (const bool interpolate : { false, true })
+  // With alpha = beta = 4 and the paper's local parameters the qqr basis is
+  // the cubic B-spline basis: the curve through the points is the classical
+  // cubic spline interpolant with not-a-knot ends (an independent solve).
+  std::mt19937 random(11);
+  for (const bool closed : { false, true })
   {
-    double previousCurvature = 1.0, previousTorsion = 1.0;
-    for (const int perTurn : { 8, 16, 32 })
+    for (const int n : { 4, 5, 9, 23 })
     {
-      const FittedPolyline fit = Fit(helix(perTurn, 6), interpolate, false);
-      const RelativeErrors errors = interiorErrors(fit, 0.4, 0.2, perTurn);
-      const double curvatureOrder = std::log2(previousCurvature / errors.Curvature);
-      const double torsionOrder = std::log2(previousTorsion / errors.Torsion);
-      std::printf("helix, %s, %d points per turn: curvature %.3g%%, torsion %.3g%% (orders %.2f, %.2f)\n",
-        interpolate ? "interpolation" : "control polygon", perTurn, 100 * errors.Curvature,
-        100 * errors.Torsion, curvatureOrder, torsionOrder);
-      if (!interpolate)
+      const std::vector<Vec3> points = RandomPoints(n, random);
+      const std::vector<double> knots = RandomKnots(closed ? n + 1 : n, random, 1.0);
+      const QQRSpline qqr =
+        QQRSpline::make(QQRConstruction::Interpolation, points, knots, closed, 4.0, 4.0);
+      const CubicSpline cubic = CubicSpline::interpolate(points, knots, closed);
+      double worst = 0.0;
+      for (int k = 0; k < qqr.numberOfSpans(); ++k)
       {
-        if (perTurn == 32)
+        for (int s = 0; s <= 8; ++s)
         {
-          EXPECT_LT(errors.Curvature, 1e-2);
-          EXPECT_LT(errors.Torsion, 2e-2);
-        }
-        if (perTurn > 8)
-        {
-          EXPECT_GT(curvatureOrder, 1.8);
-          EXPECT_GT(torsionOrder, 1.8);
+          const double u = knots[k] + (knots[k + 1] - knots[k]) * s / 8.0;
+          const Derivatives a = qqr.evaluateOnSpan(k, u, 3);
+          const Derivatives b = cubic.evaluateOnSpan(k, u, 3);
+          for (int m = 0; m <= 3; ++m)
+          {
+            worst = std::max(worst, (a[m] - b[m]).norm() / (1.0 + b[m].norm()));
+          }
         }
       }
-      else if (perTurn == 32)
-      {
-        EXPECT_NEAR(errors.Curvature, 2.0, 0.05);
-      }
-      previousCurvature = errors.Curvature;
-      previousTorsion = errors.Torsion;
+      EXPECT_LT(worst, 1e-11) << (closed ? "closed " : "open ") << n;
     }
   }
-  // The default builder (automatic interpolation) on the helix.
-  for (const int perTurn : { 8, 16, 32 })
+  // Three points: the natural ends (not-a-knot needs a third span).
+  const std::vector<Vec3> three = { { 0, 0, 0 }, { 1, 1, 0 }, { 2, 0, 1 } };
+  const QQRSpline curve = QQRSpline::make(QQRConstruction::Interpolation, three, { 0, 1, 2 }, false, 4.0, 4.0);
+  EXPECT_LT(curve.evaluate(0.0, 2)[2].norm(), 1e-12);
+  EXPECT_LT(curve.evaluate(2.0, 2)[2].norm(), 1e-12);
+  EXPECT_LT((curve.evaluate(1.0, 0)[0] - three[1]).norm(), 1e-14);
+}
+
+TEST(QQRSpline, HelixCurvatureAndTorsion)
+{
+  // The interpolation (the default) converges at second order; so does the
+  // control polygon (the cubic B-spline of the data). Errors are the largest
+  // over the samples beyond half a turn from either end, and for the
+  // interpolation over all of them (not-a-knot ends: second order too, with a
+  // larger constant).
+  for (const QQRConstruction construction : { QQRConstruction::Interpolation, QQRConstruction::ControlPolygon })
   {
-    const FittedPolyline fit = fitPolyline(helix(perTurn, 6), FitOptions{}, qqrBuilder(QQROptions{}));
-    const RelativeErrors errors = interiorErrors(fit, 0.4, 0.2, perTurn);
-    std::printf("helix, default builder, %d points per turn: curvature %.3g%%, torsion %.3g%%, "
-                "%d violations, largest alpha %g\n",
-      perTurn, 100 * errors.Curvature, 100 * errors.Torsion, fit.Audit.violations(), LargestAlpha(fit));
+    RelativeErrors previous{ 1.0, 1.0 }, previousWhole{ 1.0, 1.0 };
+    for (const int perTurn : { 8, 16, 32, 64 })
+    {
+      QQROptions options;
+      options.Construction = construction;
+      const FittedPolyline fit = fitPolyline(helix(perTurn, 6), FitOptions{}, qqrBuilder(options));
+      const RelativeErrors errors = interiorErrors(fit, 0.4, 0.2, perTurn / 2);
+      const RelativeErrors whole = interiorErrors(fit, 0.4, 0.2, 0);
+      const double curvatureOrder = std::log2(previous.Curvature / errors.Curvature);
+      const double torsionOrder = std::log2(previous.Torsion / errors.Torsion);
+      std::printf("helix, construction %d, automatic, %d points per turn: curvature %.3g%%, torsion "
+                  "%.3g%% (orders %.2f, %.2f; whole curve %.3g%%, %.3g%%, orders %.2f, %.2f), %d violations\n",
+        static_cast<int>(construction), perTurn, 100 * errors.Curvature, 100 * errors.Torsion,
+        curvatureOrder, torsionOrder, 100 * whole.Curvature, 100 * whole.Torsion,
+        std::log2(previousWhole.Curvature / whole.Curvature),
+        std::log2(previousWhole.Torsion / whole.Torsion), fit.Audit.violations());
+      if (perTurn > 16)
+      {
+        EXPECT_GT(curvatureOrder, 1.8);
+        EXPECT_GT(torsionOrder, 1.8);
+      }
+      // The control polygon's doubled end points straighten its ends: no
+      // convergence there.
+      if (construction == QQRConstruction::Interpolation)
+      {
+        if (perTurn > 16)
+        {
+          EXPECT_GT(std::log2(previousWhole.Curvature / whole.Curvature), 1.8);
+          EXPECT_GT(std::log2(previousWhole.Torsion / whole.Torsion), 1.8);
+        }
+        EXPECT_LT(errors.Curvature, perTurn >= 64 ? 0.01 : (perTurn >= 32 ? 0.05 : 1.0));
+        EXPECT_LT(errors.Torsion, perTurn >= 64 ? 0.01 : (perTurn >= 32 ? 0.05 : 1.0));
+      }
+      previous = errors;
+      previousWhole = whole;
+    }
   }
+}
+
+TEST(QQRSpline, LocalInterpolationCurvatureTendsToThreeTimesTheCurves)
+{
+  // Why the local interpolation is not the default: at alpha = 4 on uniform
+  // knots z = 1/2, (3.20) is the central difference (P_{i+1} - P_{i-1}) / 2h
+  // and (3.21) is (alpha^2 - alpha) / 2 * (1/2) * (P_{i+1} - 2 P_i + P_{i-1}) /
+  // h^2, three times the second difference: at every point the curvature
+  // tends to 3 times the helix's (0.4) as the points get denser.
+  double previous = 0.0;
+  for (const int perTurn : { 8, 16, 32, 64, 128 })
+  {
+    QQROptions options;
+    options.Construction = QQRConstruction::LocalInterpolation;
+    options.Automatic = false;
+    const FittedPolyline fit = fitPolyline(helix(perTurn, 4), FitOptions{}, qqrBuilder(options));
+    const SampledCurve sampled = sampleFit(fit);
+    double ratio = 0.0;
+    int knots = 0;
+    for (int k = 0; k < sampled.Samples.size(); ++k)
+    {
+      const int span = sampled.Samples.Span[k];
+      if (sampled.Samples.SpanFraction[k] == 0.0 && span >= 2 && span + 2 < fit.Data.numberOfSpans())
+      {
+        ratio += sampled.Frames[k].Curvature / 0.4;
+        ++knots;
+      }
+    }
+    ratio /= knots;
+    std::printf("local interpolation, %d points per turn: curvature at the points / the helix's %.4f\n",
+      perTurn, ratio);
+    if (perTurn >= 32)
+    {
+      EXPECT_LT(std::abs(ratio - 3.0), std::abs(previous - 3.0)) << perTurn; // tends to 3
+    }
+    previous = ratio;
+  }
+  EXPECT_NEAR(previous, 3.0, 0.01);
 }
 
 TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
@@ -1276,14 +1299,14 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
   EXPECT_THROW(qqrBasis(0.5, NAN, 4.0), std::invalid_argument);
   const std::vector<Vec3> points = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 1 } };
   const std::vector<double> knots = { 0, 1, 2, 3 };
-  EXPECT_NO_THROW(QQRSpline::interpolate(points, knots, false, 2.0, 2.0));
-  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, 4.0, 1.5), std::invalid_argument);
-  EXPECT_THROW(QQRSpline::approximate(points, knots, false, 1.5, 4.0), std::invalid_argument);
-  EXPECT_THROW(QQRSpline::interpolate(points, { 0, 1, 2 }, false, 4.0, 4.0), std::invalid_argument);
-  EXPECT_THROW(QQRSpline::interpolate(points, knots, true, 4.0, 4.0), std::invalid_argument); // closed: 5 knots
-  EXPECT_THROW(QQRSpline::interpolate(points, { 0, 1, 1, 3 }, false, 4.0, 4.0), std::invalid_argument);
-  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, std::vector<double>{ 4, 4, 4 }), std::invalid_argument);
-  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, std::vector<double>{ 4, 4, 1, 4 }), std::invalid_argument);
+  EXPECT_NO_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, 2.0, 2.0));
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, 4.0, 1.5), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, 1.5, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, { 0, 1, 2 }, false, 4.0, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, true, 4.0, 4.0), std::invalid_argument); // closed: 5 knots
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, { 0, 1, 1, 3 }, false, 4.0, 4.0), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, std::vector<double>{ 4, 4, 4 }), std::invalid_argument);
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, std::vector<double>{ 4, 4, 1, 4 }), std::invalid_argument);
   EXPECT_THROW(QQRBSplineBasis({ 0, 1, 2, 3 }, 4, 4, {}), std::invalid_argument);
   EXPECT_THROW(QQRBSplineBasis({ 0, 1, 2, 3, 4 }, 4, 4, QQRLocalParameters{}), std::invalid_argument);
   QQROptions options;
@@ -1293,16 +1316,16 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
   options.Beta = -1.0;
   EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
   options.Beta = 4.0;
-  options.MinAlpha = 3.0; // C2 needs > 3
+  options.MaxAlpha = NAN;
   EXPECT_THROW(qqrBuilder(options), std::invalid_argument);
-  options.Automatic = false; // MinAlpha not used
+  options.Automatic = false; // MaxAlpha not used
   EXPECT_NO_THROW(qqrBuilder(options));
   // Local shape parameters per point: one per point, finite or NaN.
   const std::vector<double> kappa(4, 4.0);
   const QQRLocalShape paper;
-  EXPECT_NO_THROW(QQRSpline::interpolate(points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { NAN, 0.2, 1, 0 } }));
-  EXPECT_THROW(QQRSpline::interpolate(points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { 0.5, 0.5, 0.5 } }),
+  EXPECT_NO_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { NAN, 0.2, 1, 0 } }));
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::LocalInterpolation, points, knots, false, kappa, paper, QQRKnotShape{ {}, {}, { 0.5, 0.5, 0.5 } }),
     std::invalid_argument);
-  EXPECT_THROW(QQRSpline::approximate(points, knots, false, kappa, paper, QQRKnotShape{ { 0, 0, INFINITY, 0 }, {}, {} }),
+  EXPECT_THROW(QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, kappa, paper, QQRKnotShape{ { 0, 0, INFINITY, 0 }, {}, {} }),
     std::invalid_argument);
 }

@@ -306,7 +306,8 @@ TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
 
 TEST(QQRSplineFilter, LocalBiasPerPointFromAnInputArray)
 {
-  // z = 0.5 at every point but point 8, whose -1 falls back to the paper's z.
+  // z = 0.5 at every point but point 8, whose -1 falls back to the paper's
+  // z; the local interpolation, where a z reaches four spans only.
   const auto data = DeepCopy(ReadData("akima.vtp"));
   vtkNew<vtkDoubleArray> given;
   given->SetName("bias");
@@ -316,10 +317,12 @@ TEST(QQRSplineFilter, LocalBiasPerPointFromAnInputArray)
   data->GetPointData()->AddArray(given);
   const FilterRun half = RunFilter<QQR>(data, [](QQR* f) {
     f->AutomaticOff();
+    f->SetModeToLocalInterpolation();
     f->SetZArrayName("bias");
   });
   const FilterRun custom = RunFilter<QQR>(data, [](QQR* f) {
     f->AutomaticOff();
+    f->SetModeToLocalInterpolation();
     f->SetLocalParameters(QQR::CUSTOM);
     f->SetZ(0.5);
   });

@@ -1,0 +1,392 @@
+#include "AutomaticShape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shapesplines
+{
+namespace
+{
+int failingBits(unsigned mask)
+{
+  int bits = 0;
+  for (; mask; mask &= mask - 1)
+  {
+    ++bits;
+  }
+  return bits;
+}
+
+/**
+ * The state of one automatic search (preserveShapeAutomatically): the levels
+ * per span and what the rounds learnt about each span, the curve of the
+ * current levels and its span-by-span audit.
+ */
+class ShapeSearch
+{
+public:
+  ShapeSearch(const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
+    : Context(context)
+    , Reference(reference)
+    , Ladder(ladder)
+    , Shape(discreteShape(reference, context.Options.Tolerances))
+    , Spans(reference.numberOfSpans())
+    , Auditor(reference, this->Shape, context.Options.Tolerances,
+        context.Options.AuditSubdivisions, context.CoordinateNoise)
+    , Levels(this->Spans, 0)
+    , Frozen(this->Spans, 0)
+    , Stalls(this->Spans, 0)
+    , Step(this->Spans, 1)
+    , RaisedBefore(this->Spans, 0)
+  {
+    const double largestTurn = *std::max_element(this->Shape.Curvature.begin(), this->Shape.Curvature.end());
+    const bool straightRuns =
+      std::any_of(this->Shape.Collinear.begin(), this->Shape.Collinear.end(), [](char c) { return c; });
+    const double diagonal = boundingBoxDiagonal(reference.Points);
+    const ShapeBounds& bounds = ladder.Bounds;
+    this->CurvatureBound =
+      (straightRuns ? bounds.StraightRunCurvatureFactor : bounds.CurvatureFactor) *
+      std::max(largestTurn, diagonal > 0.0 ? 1.0 / diagonal : 1.0);
+  }
+
+  AutomaticShape run()
+  {
+    const ProgressCallback& progress = this->Context.Options.Progress;
+    this->Curve = this->Ladder.Build(this->Levels);
+    this->Auditor.auditAll(*this->Curve, progress);
+    this->Audit = this->Auditor.result();
+    this->Best = this->Levels;
+    this->BestViolations = this->Audit.violations();
+    int round = 1;
+    for (; round <= this->Ladder.MaxRounds; ++round)
+    {
+      reportProgress(progress, round, 1, static_cast<double>(round) / this->Ladder.MaxRounds);
+      const std::vector<char> raise = this->chooseRaises();
+      if (std::none_of(raise.begin(), raise.end(), [](char r) { return r; }))
+      {
+        if (this->AuditedWhole || this->WholeAudits >= MostWholeAudits)
+        {
+          break;
+        }
+        this->auditWhole(); // nothing seen failing, or nothing left to raise: look everywhere
+        continue;
+      }
+      this->raiseAndAudit(raise);
+      if (this->Audit.violations() < this->BestViolations)
+      {
+        this->Best = this->Levels;
+        this->BestViolations = this->Audit.violations();
+      }
+    }
+    return this->finish(round);
+  }
+
+private:
+  /// Whole-curve audits after the first: a global solve moves far spans a little.
+  static constexpr int MostWholeAudits = 4;
+
+  /// What the bounds limit on a span.
+  struct Figures
+  {
+    double Curvature = 0.0, Speed = 1.0, Deviation = 0.0;
+  };
+
+  Figures figures(int j) const
+  {
+    return { this->Auditor.largestCurvature(j), this->Auditor.lowestSpeed(j),
+      this->Auditor.largestDeviation(j) };
+  }
+
+  /// Span j, or -1 beyond an open curve's ends (closed curves wrap).
+  int span(int j) const
+  {
+    if (this->Reference.Closed)
+    {
+      return ((j % this->Spans) + this->Spans) % this->Spans;
+    }
+    return j >= 0 && j < this->Spans ? j : -1;
+  }
+
+  /// The spans within reach of a marked one.
+  std::vector<int> around(const std::vector<char>& marked, int reach) const
+  {
+    std::vector<char> in(this->Spans, 0);
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      for (int d = -reach; d <= reach && marked[j]; ++d)
+      {
+        const int k = this->span(j + d);
+        in[std::max(k, 0)] = in[std::max(k, 0)] || k >= 0;
+      }
+    }
+    std::vector<int> spans;
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      if (in[j])
+      {
+        spans.push_back(j);
+      }
+    }
+    return spans;
+  }
+
+  bool canRise(int j) const
+  {
+    return j >= 0 && !this->Frozen[j] && this->Levels[j] < this->Ladder.TopLevel;
+  }
+
+  /// Each failing span, or where it cannot rise, its neighbours (all spans: Uniform).
+  std::vector<char> chooseRaises() const
+  {
+    std::vector<char> raise(this->Spans, 0);
+    if (this->Audit.preserving())
+    {
+      return raise;
+    }
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      if (this->Ladder.Uniform)
+      {
+        raise[j] = this->canRise(j);
+      }
+      else if (this->Audit.SpanMask[j] != 0 && this->canRise(j))
+      {
+        raise[j] = 1;
+      }
+      else if (this->Audit.SpanMask[j] != 0)
+      {
+        for (const int neighbour : { this->span(j - 1), this->span(j + 1) })
+        {
+          raise[std::max(neighbour, 0)] |= this->canRise(neighbour);
+        }
+      }
+    }
+    return raise;
+  }
+
+  void auditWhole()
+  {
+    this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
+    this->Audit = this->Auditor.result();
+    this->AuditedWhole = true;
+    ++this->WholeAudits;
+    if (this->Best == this->Levels)
+    {
+      this->BestViolations = this->Audit.violations();
+    }
+  }
+
+  void rebuild(const std::vector<int>& moved)
+  {
+    this->Curve = this->Ladder.Build(this->Levels);
+    for (const int j : moved)
+    {
+      this->Auditor.audit(*this->Curve, j);
+    }
+  }
+
+  void raiseAndAudit(std::vector<char> raise)
+  {
+    // A span raised again (still failing) takes a step twice as long: the
+    // level it needs is reached in a few rounds, overshooting it at most 2x.
+    const std::vector<int> previous = this->Levels;
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      this->Step[j] = raise[j] && this->RaisedBefore[j] ? 2 * this->Step[j] : std::max(1, this->Step[j] / 2);
+      this->Levels[j] = raise[j] ? std::min(this->Ladder.TopLevel, this->Levels[j] + this->Step[j]) : this->Levels[j];
+      this->RaisedBefore[j] = raise[j];
+    }
+    const std::vector<int> moved = this->around(raise, this->Ladder.Reach);
+    std::vector<Figures> before(this->Spans);
+    for (const int j : moved)
+    {
+      before[j] = this->figures(j);
+    }
+    this->rebuild(moved);
+    if (this->undoBeyondBounds(raise, previous, moved, before))
+    {
+      this->rebuild(moved);
+    }
+    const ShapeAudit next = this->Auditor.result();
+    this->AuditedWhole = false;
+    this->freezeStalled(raise, next);
+    this->Audit = next;
+  }
+
+  /**
+   * Undoes the raises near a span pushed beyond the bounds (and beyond where
+   * it was): a long step is tried again as a single one, a single one is the
+   * last (the span's level is frozen). True if anything was undone.
+   */
+  bool undoBeyondBounds(std::vector<char>& raise, const std::vector<int>& previous,
+    const std::vector<int>& moved, const std::vector<Figures>& before)
+  {
+    const ShapeBounds& bounds = this->Ladder.Bounds;
+    std::vector<char> beyond(this->Spans, 0);
+    bool anyBeyond = false;
+    for (const int j : moved)
+    {
+      const Figures now = this->figures(j);
+      if ((now.Curvature > this->CurvatureBound && now.Curvature > before[j].Curvature) ||
+        (now.Speed < bounds.SpeedFraction && now.Speed < before[j].Speed) ||
+        (now.Deviation > bounds.Deviation && now.Deviation > before[j].Deviation))
+      {
+        beyond[j] = anyBeyond = true;
+      }
+    }
+    for (const int j : anyBeyond ? this->around(beyond, this->Ladder.Reach) : std::vector<int>{})
+    {
+      if (raise[j])
+      {
+        this->Levels[j] = previous[j];
+        this->Frozen[j] = this->Step[j] == 1;
+        this->Step[j] = 1;
+        this->RaisedBefore[j] = raise[j] = 0;
+      }
+    }
+    return anyBeyond;
+  }
+
+  /// Freezes a level that has three times in a row not brought its spans
+  /// closer to passing (fewer failures, or a tenth less deficiency).
+  void freezeStalled(const std::vector<char>& raise, const ShapeAudit& next)
+  {
+    auto nearby = [&](const ShapeAudit& a, int j) {
+      double deficiency = 0.0;
+      int bits = 0;
+      for (int d = -1; d <= 1; ++d)
+      {
+        const int k = this->span(j + d);
+        if (k >= 0)
+        {
+          deficiency += a.SpanDeficiency[k];
+          bits += failingBits(a.SpanMask[k]);
+        }
+      }
+      return std::make_pair(bits, deficiency);
+    };
+    constexpr int MostStalls = 3;
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      if (raise[j])
+      {
+        const auto [bitsBefore, deficiencyBefore] = nearby(this->Audit, j);
+        const auto [bitsAfter, deficiencyAfter] = nearby(next, j);
+        const bool helped = bitsAfter < bitsBefore || deficiencyAfter < 0.9 * deficiencyBefore;
+        this->Stalls[j] = helped ? 0 : this->Stalls[j] + 1;
+        this->Frozen[j] = this->Frozen[j] || this->Stalls[j] >= MostStalls;
+      }
+    }
+  }
+
+  /// The best curve met, audited whole.
+  AutomaticShape finish(int rounds)
+  {
+    AutomaticShape result;
+    result.Rounds = rounds;
+    if (this->Best != this->Levels)
+    {
+      this->Levels = this->Best;
+      this->Curve = this->Ladder.Build(this->Levels);
+      this->AuditedWhole = false;
+    }
+    if (!this->AuditedWhole)
+    {
+      this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
+      this->Audit = this->Auditor.result();
+    }
+    result.Spline = std::move(this->Curve);
+    result.Audit = std::move(this->Audit);
+    result.Levels = std::move(this->Levels);
+    return result;
+  }
+
+  const FitContext& Context;
+  const CleanPolyline& Reference;
+  const ShapeLadder& Ladder;
+  const DiscreteShape Shape;
+  const int Spans;
+  double CurvatureBound = 0.0;
+  CurveAuditor Auditor;
+  std::vector<int> Levels;
+  std::vector<char> Frozen; ///< no longer raised: beyond the bounds, or stalled
+  std::vector<int> Stalls;
+  std::vector<int> Step;
+  std::vector<char> RaisedBefore; ///< raised in the last round
+  std::unique_ptr<shapesplines::Curve> Curve;
+  ShapeAudit Audit;
+  bool AuditedWhole = true;
+  int WholeAudits = 0;
+  std::vector<int> Best;
+  int BestViolations = 0;
+};
+} // namespace
+
+std::vector<int> knotLevels(const std::vector<int>& spanLevels, bool closed)
+{
+  const int spans = static_cast<int>(spanLevels.size());
+  const int knots = closed ? spans : spans + 1;
+  std::vector<int> levels(knots, 0);
+  for (int j = 0; j < spans; ++j)
+  {
+    levels[j] = std::max(levels[j], spanLevels[j]);
+    int& right = levels[(j + 1) % knots];
+    right = std::max(right, spanLevels[j]);
+  }
+  return levels;
+}
+
+double raisedTimes(double start, int level, const std::function<double(double)>& raise)
+{
+  double value = start;
+  for (int step = 0; step < level; ++step)
+  {
+    const double next = raise(value);
+    if (next == value)
+    {
+      break;
+    }
+    value = next;
+  }
+  return value;
+}
+
+int stepsToCap(double start, const std::function<double(double)>& raise)
+{
+  constexpr int MostSteps = 64;
+  double value = start;
+  int steps = 0;
+  for (; steps < MostSteps; ++steps)
+  {
+    const double next = raise(value);
+    if (next == value)
+    {
+      break;
+    }
+    value = next;
+  }
+  return steps;
+}
+
+BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
+  const CleanPolyline& reference, const ShapeLadder& ladder)
+{
+  BuiltCurve built;
+  if (!automatic)
+  {
+    built.Spline = ladder.Build(std::vector<int>(reference.numberOfSpans(), 0));
+    return built;
+  }
+  AutomaticShape found = preserveShapeAutomatically(context, reference, ladder);
+  built.Spline = std::move(found.Spline);
+  built.Audit = std::move(found.Audit);
+  return built;
+}
+
+AutomaticShape preserveShapeAutomatically(
+  const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
+{
+  return ShapeSearch(context, reference, ladder).run();
+}
+} // namespace shapesplines

@@ -1,0 +1,99 @@
+// ShapeSplines math core: the automatic shape mode, written once for every
+// family: raise a shape parameter (tension, degree, exponent) span by span
+// where the curve breaks the shape of its reference, within bounds that keep
+// the curve regular.
+#ifndef shapesplines_AutomaticShape_h
+#define shapesplines_AutomaticShape_h
+
+#include "FitPolyline.h"
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace shapesplines
+{
+/**
+ * What no automatic mode may make of a curve, however many violations are
+ * left: a curvature beyond CurvatureFactor times the reference polygon's
+ * largest discrete (Menger) curvature (StraightRunCurvatureFactor when the
+ * reference has collinear points: a straight run joined to a turn needs a
+ * sharp bend), a speed |s'| below SpeedFraction of a span's chord over its
+ * parameter length (a curve that nearly stops makes a cusp), or a span
+ * farther from its segment of the reference polygon than Deviation times
+ * the longest of that segment and its neighbours (a curve through the
+ * points, or near its polygon, has no business away from them).
+ */
+struct ShapeBounds
+{
+  double CurvatureFactor = 1e3;
+  double StraightRunCurvatureFactor = 1e4;
+  double SpeedFraction = 1e-3;
+  double Deviation = 0.5;
+};
+
+/**
+ * A family's automatic shape parameter as a level per span: level 0 is the
+ * curve of the fixed parameters, each level up is one step tighter (a higher
+ * tension or degree), TopLevel the family's cap. Families whose parameter
+ * sits at the knots take, at each knot, the higher level of its two spans
+ * (knotLevels).
+ */
+struct ShapeLadder
+{
+  int TopLevel = 0;
+  /// The curve with level levels[j] on span j.
+  std::function<std::unique_ptr<Curve>(const std::vector<int>& levels)> Build;
+  /// How many spans on each side of a span its level visibly moves.
+  int Reach = 2;
+  /// Every span at one level (a global scheme): any failure raises them all.
+  bool Uniform = false;
+  int MaxRounds = 64;
+  ShapeBounds Bounds;
+};
+
+/// The automatic mode's curve, its audit against the reference and the levels chosen.
+struct AutomaticShape
+{
+  std::unique_ptr<Curve> Spline;
+  ShapeAudit Audit;
+  std::vector<int> Levels;
+  int Rounds = 0;
+};
+
+/**
+ * The automatic mode: builds level 0 and audits it against reference; then,
+ * round by round, raises each failing span (a span already at the top, or
+ * frozen, raises its neighbours instead) by a step that doubles while it
+ * keeps failing, rebuilds, and audits again only the spans within Reach of a
+ * change. A raise that pushes a span beyond the bounds (and beyond where it
+ * was) is undone, tried again as a single step, and then that span's level
+ * frozen; a span whose level three times in a row does not bring it closer
+ * to passing (fewer failures, or a tenth less ShapeAudit::SpanDeficiency) is
+ * frozen too. Stops when nothing fails or nothing can rise; a last
+ * audit of the whole curve catches the far effects of a global solve (then it
+ * goes on). Returns the best curve met: the fewest violations, among those
+ * within the bounds. Progress is reported each round (it can abort).
+ */
+AutomaticShape preserveShapeAutomatically(
+  const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);
+
+/**
+ * What a family's builder returns: the ladder's level 0 as it is (automatic
+ * false), or preserveShapeAutomatically()'s curve with its audit.
+ */
+BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
+  const CleanPolyline& reference, const ShapeLadder& ladder);
+
+/// Per knot (one per point; closed curves: one per distinct point), the higher level of its spans.
+std::vector<int> knotLevels(const std::vector<int>& spanLevels, bool closed);
+
+/// The shape parameter after a given number of steps: start raised level times
+/// by raise() (which caps it), stopping early where it stops moving.
+double raisedTimes(double start, int level, const std::function<double(double)>& raise);
+
+/// The number of steps raise() takes from start until it stops moving (at most 64).
+int stepsToCap(double start, const std::function<double(double)>& raise);
+} // namespace shapesplines
+
+#endif

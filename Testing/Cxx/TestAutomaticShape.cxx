@@ -1,0 +1,262 @@
+// The automatic shape mode every family shares (preserveShapeAutomatically),
+// on toy families whose levels do known things, and every family's default
+// mode on the data users have (noisy helices and trefoils, random 3D
+// polylines, 3D staircases), generated here.
+#include "AutomaticShape.h"
+#include "GeneralizedCubicSpline.h"
+#include "MathTestUtilities.h"
+#include "QQRSpline.h"
+#include "TensionQuinticFit.h"
+#include "VariableDegreeSpline.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace shapesplines;
+using namespace shapesplines::test;
+
+namespace
+{
+/**
+ * A toy family with a level per span: the cubic through the data, on each
+ * span blended with its chord by w = min(1, level / 2) (w = 1: the span is
+ * straight, which breaks no criterion of Definition 1), and, with Wiggle,
+ * a bump of level * Wiggle * h out of the plane z = 0 added instead (more
+ * violations the higher the level on planar data).
+ */
+class ToyCurve final : public Curve
+{
+public:
+  ToyCurve(const CleanPolyline& data, const std::vector<double>& knots, std::vector<int> levels, double wiggle)
+    : Curve(knots, data.Closed)
+    , Cubic(CubicSpline::interpolate(data.Points, knots, data.Closed))
+    , Points(data.Points)
+    , Levels(std::move(levels))
+    , Wiggle(wiggle)
+  {
+  }
+
+  Derivatives evaluateOnSpan(int span, double t, int order) const override
+  {
+    Derivatives d = this->Cubic.evaluateOnSpan(span, t, order);
+    const double h = this->Knots[span + 1] - this->Knots[span];
+    const double tau = (t - this->Knots[span]) / h;
+    if (this->Wiggle > 0.0)
+    {
+      const double a = this->Levels[span] * this->Wiggle * h;
+      const double w = 2.0 * Pi / h;
+      for (int m = 0; m <= order; ++m)
+      {
+        const double phase = 2.0 * Pi * tau + 0.5 * Pi * m; // d^m/dt^m sin
+        d[m].z() += a * std::pow(w, m) * std::sin(phase);
+      }
+      return d;
+    }
+    const double w = std::min(1.0, 0.5 * this->Levels[span]);
+    const Vec3& a = this->Points[span];
+    const Vec3& b = this->Points[(span + 1) % this->Points.size()];
+    for (Vec3& v : d)
+    {
+      v *= 1.0 - w;
+    }
+    d[0] += w * (a + tau * (b - a));
+    if (order >= 1)
+    {
+      d[1] += w * (b - a) / h;
+    }
+    return d;
+  }
+
+  std::vector<SpanParameter> spanParameters() const override
+  {
+    return { { "Level", std::vector<double>(this->Levels.begin(), this->Levels.end()), true } };
+  }
+
+private:
+  CubicSpline Cubic;
+  std::vector<Vec3> Points;
+  std::vector<int> Levels;
+  double Wiggle;
+};
+
+struct ToyRun
+{
+  int Builds = 0;
+  std::vector<int> Levels;
+};
+
+CurveBuilder toyBuilder(ToyRun& run, double wiggle = 0.0, bool uniform = false,
+  const ProgressCallback& progress = {})
+{
+  return [&run, wiggle, uniform, progress](const FitContext& context) {
+    ShapeLadder ladder;
+    ladder.TopLevel = 2;
+    ladder.Uniform = uniform;
+    ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
+      ++run.Builds;
+      return std::make_unique<ToyCurve>(context.Data, context.Knots, levels, wiggle);
+    };
+    FitOptions options = context.Options;
+    options.Progress = progress;
+    const FitContext withProgress{ context.Data, context.Knots, options, context.CoordinateNoise,
+      context.PointValues };
+    AutomaticShape found = preserveShapeAutomatically(withProgress, context.Data, ladder);
+    run.Levels = found.Levels;
+    BuiltCurve built;
+    built.Spline = std::move(found.Spline);
+    built.Audit = std::move(found.Audit);
+    return built;
+  };
+}
+} // namespace
+
+TEST(AutomaticShape, RaisesOnlyTheFailingSpansUntilNoneFails)
+{
+  const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  ASSERT_FALSE(cubic.Audit.preserving());
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run));
+  EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations();
+  // Its own audit agrees with an independent one of the final curve.
+  EXPECT_EQ(fit.Audit.SpanMask,
+    auditCurve(*fit.Spline, fit.Data, fit.Shape, FitOptions{}.Tolerances, 16, fit.CoordinateNoise).SpanMask);
+  // A level moves its own span only: exactly the spans the cubic failed are raised.
+  for (size_t j = 0; j < run.Levels.size(); ++j)
+  {
+    EXPECT_EQ(run.Levels[j] > 0, cubic.Audit.SpanMask[j] != 0) << "span " << j;
+  }
+  EXPECT_LE(run.Builds, 4);
+}
+
+TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
+{
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.0, true));
+  EXPECT_TRUE(fit.Audit.preserving());
+  EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), run.Levels.front()),
+    static_cast<long>(run.Levels.size()));
+  EXPECT_GT(run.Levels.front(), 0);
+}
+
+TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
+{
+  // Every level adds a wiggle out of the data's plane: raising only adds
+  // violations. The mode ends with the start's curve, after a few rounds.
+  const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.05));
+  EXPECT_EQ(fit.Audit.violations(), cubic.Audit.violations());
+  EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
+  EXPECT_LE(run.Builds, 10);
+}
+
+TEST(AutomaticShape, ReportsProgressEveryRoundAndStopsWhenAsked)
+{
+  int calls = 0;
+  ToyRun run;
+  fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.0, false, [&](double) { return ++calls > 0; }));
+  EXPECT_GE(calls, 2);
+  ToyRun stopped;
+  EXPECT_THROW(
+    fitPolyline(akima(), FitOptions{}, toyBuilder(stopped, 0.0, false, [](double) { return false; })),
+    FitAborted);
+}
+
+TEST(AutomaticShape, KnotLevelsTakeTheHigherSpan)
+{
+  EXPECT_EQ(knotLevels({ 0, 2, 1 }, false), (std::vector<int>{ 0, 2, 2, 1 }));
+  EXPECT_EQ(knotLevels({ 0, 2, 1 }, true), (std::vector<int>{ 1, 2, 2 }));
+  const auto doubling = [](double x) { return std::min(8.0, 2.0 * x); };
+  EXPECT_EQ(raisedTimes(1.0, 2, doubling), 4.0);
+  EXPECT_EQ(raisedTimes(1.0, 9, doubling), 8.0);
+  EXPECT_EQ(stepsToCap(1.0, doubling), 3);
+}
+
+namespace
+{
+struct Family
+{
+  const char* Name;
+  CurveBuilder Fixed, Automatic;
+  bool AlwaysPreserves; ///< reaches zero violations on every line of usersData()
+};
+
+std::vector<Family> families()
+{
+  GeneralizedCubicOptions generalized;
+  VariableDegreeOptions degree;
+  QuinticFitOptions quintic;
+  QQROptions qqr;
+  std::vector<Family> all;
+  all.push_back({ "generalized cubic", nullptr, generalizedCubicBuilder(generalized), true });
+  all.push_back({ "variable degree", nullptr, variableDegreeBuilder(degree), false });
+  all.push_back({ "tension quintic", nullptr, tensionQuinticBuilder(quintic), false });
+  all.push_back({ "qqr", nullptr, qqrBuilder(qqr), false });
+  generalized.Automatic = degree.Automatic = quintic.Automatic = qqr.Automatic = false;
+  all[0].Fixed = generalizedCubicBuilder(generalized);
+  all[1].Fixed = variableDegreeBuilder(degree);
+  all[2].Fixed = tensionQuinticBuilder(quintic);
+  all[3].Fixed = qqrBuilder(qqr);
+  return all;
+}
+} // namespace
+
+TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
+{
+  // No cusp, ever: the largest curvature within 1e3 times the data's largest
+  // discrete curvature (1e4 with straight runs), the speed above 1e-3 of the
+  // chord's, or no worse than the fixed parameters' curve. Never more
+  // violations than the fixed parameters'; the generalized cubic removes
+  // them all, the variable degree spline all on helices, trefoils and
+  // staircases (its degrees reach their cap on some random polylines).
+  for (const Family& family : families())
+  {
+    int fixedTotal = 0, automaticTotal = 0;
+    for (const UsersData& line : usersData())
+    {
+      const FittedPolyline fixed = fitPolyline(line.Points, FitOptions{}, family.Fixed);
+      const FittedPolyline automatic = fitPolyline(line.Points, FitOptions{}, family.Automatic);
+      const BoundFigures bounds = boundFigures(automatic);
+      const BoundFigures start = boundFigures(fixed);
+      fixedTotal += fixed.Audit.violations();
+      automaticTotal += automatic.Audit.violations();
+      std::printf("%s, %s: violations %d -> %d, curvature / data's %.3g (fixed %.3g), lowest speed %.3g\n",
+        family.Name, line.Name.c_str(), fixed.Audit.violations(), automatic.Audit.violations(),
+        bounds.Curvature, start.Curvature, bounds.Speed);
+      EXPECT_TRUE(withinBounds(bounds) || (bounds.Curvature <= start.Curvature && bounds.Speed >= start.Speed))
+        << family.Name << ", " << line.Name;
+      EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << family.Name << ", " << line.Name;
+      const bool walk = line.Name.rfind("random walk", 0) == 0;
+      if (family.AlwaysPreserves || (std::string(family.Name) == "variable degree" && !walk))
+      {
+        EXPECT_TRUE(automatic.Audit.preserving()) << family.Name << ", " << line.Name;
+      }
+    }
+    std::printf("%s: %d violations fixed, %d automatic\n", family.Name, fixedTotal, automaticTotal);
+    EXPECT_LT(automaticTotal, fixedTotal) << family.Name;
+  }
+}
+
+TEST(AutomaticShape, StraightRunsBecomeStraightSpans)
+{
+  // Where Definition 1 calls the data collinear, the spans on both sides of a
+  // collinear point are straight (the tangent within 1e-3 of the segment,
+  // criterion (i)) in the families whose tension limit is the data polygon.
+  for (const Family& family : families())
+  {
+    const std::string name = family.Name;
+    if (name != "generalized cubic" && name != "variable degree")
+    {
+      continue;
+    }
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+      const FittedPolyline fit = fitPolyline(staircase(5, 5, seed), FitOptions{}, family.Automatic);
+      EXPECT_EQ(fit.Audit.Failures[int(ShapeCriterion::Collinearity)], 0) << name << " " << seed;
+      const BoundFigures bounds = boundFigures(fit);
+      EXPECT_LE(bounds.Curvature, 1e4) << name;
+      EXPECT_GE(bounds.Speed, 1e-3) << name;
+    }
+  }
+}
