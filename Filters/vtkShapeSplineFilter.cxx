@@ -331,6 +331,7 @@ int vtkShapeSplineFilter::RequestData(
   // Messages and where each line's samples go, serially (VTK's messages are not
   // thread-safe); then the arrays are written in parallel, a line per task.
   std::vector<size_t> kept; // lines in the output, in input order
+  int noisyLines = 0;
   std::vector<vtkIdType> firstSample(1, 0);
   for (size_t k = 0; k < lines.size(); ++k)
   {
@@ -369,6 +370,7 @@ int vtkShapeSplineFilter::RequestData(
                                     << " point spacing causes this; try Centripetal parameterization"
                                     << " or resample the line.");
     }
+    noisyLines += fit.LooksNoisy ? 1 : 0;
     if (fit.Plan.LengthIncreased)
     {
       vtkWarningMacro("Line (cell " << line.CellId
@@ -377,6 +379,12 @@ int vtkShapeSplineFilter::RequestData(
     const size_t count = fit.Spline ? fit.Plan.size() : line.PointIds.size();
     kept.push_back(k);
     firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
+  }
+  if (noisyLines > 0)
+  {
+    vtkWarningMacro(<< noisyLines << " line(s) interpolated through points that look noisy (a least "
+                    << "squares keeps far fewer knots than points): their curvature and torsion "
+                    << "follow the noise. Mode Approximate gives the curve's own.");
   }
   // The families' shape parameters (the same names on every line of a family;
   // lines too short for the family's curve have none).
@@ -534,6 +542,10 @@ int vtkShapeSplineFilter::RequestData(
   violations->SetName("ShapeViolations");
   violations->SetNumberOfTuples(lineCount);
   auto length = NewArray("Length", 1, lineCount);
+  vtkNew<vtkIntArray> knotCount;
+  knotCount->SetName("NumberOfKnots");
+  knotCount->SetNumberOfTuples(lineCount);
+  auto noiseLevel = NewArray("NoiseLevel", 1, lineCount);
   auto tortuosity = NewArray("Tortuosity", 1, lineCount);
   auto condition = NewArray("ConditionEstimate", 1, lineCount);
   for (vtkIdType c = 0; c < lineCount; ++c)
@@ -548,6 +560,8 @@ int vtkShapeSplineFilter::RequestData(
     length->SetValue(c, total);
     tortuosity->SetValue(c, line.Chord > 0 ? total / line.Chord : 0.0);
     condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
+    knotCount->SetValue(c, fit.Spline ? static_cast<int>(fit.Spline->knots().size()) : 0);
+    noiseLevel->SetValue(c, fit.NoiseLevel);
     const auto lineParameters =
       fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
     for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
@@ -583,7 +597,8 @@ int vtkShapeSplineFilter::RequestData(
     outPD->AddArray(Renamed(binormal.Get(), "FrenetBinormal"));
   }
   for (vtkAbstractArray* a :
-    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition })
+    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition,
+      knotCount, noiseLevel })
   {
     outCD->AddArray(a);
   }
@@ -604,5 +619,6 @@ void vtkShapeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SampleLength: " << this->SampleLength << "\n";
   os << indent << "DataShapeTolerance: " << this->DataShapeTolerance << "\n";
   os << indent << "CurveShapeTolerance: " << this->CurveShapeTolerance << "\n";
+  os << indent << "CorrectParameters: " << (this->CorrectParameters ? "On" : "Off") << "\n";
   os << indent << "VMTKArrayNames: " << (this->VMTKArrayNames ? "On" : "Off") << "\n";
 }

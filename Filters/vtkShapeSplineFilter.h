@@ -24,8 +24,12 @@
  * Tortuosity (length / end-to-end distance, 0 for closed lines),
  * ConditionEstimate (of the linear systems solved for the line; a warning
  * names the lines where it is too large to trust, above 4.5e11), the
- * summary of each shape parameter (Max<Name> or Min<Name>), and the input
- * cell arrays. An approximating family audits its curve against the polygon
+ * summary of each shape parameter (Max<Name> or Min<Name>), NumberOfKnots
+ * (of the curve), NoiseLevel (an approximation's root-mean-square distance
+ * from its points; 0 for an interpolation), and the input cell arrays.
+ * Interpolated lines whose points look noisy (a least squares keeps far
+ * fewer knots than points) get one warning per run: their curvature and
+ * torsion follow the noise, and Mode Approximate gives the curve's own. An approximating family audits its curve against the polygon
  * whose shape it keeps rather than against the data. With VMTKArrayNames on, the frame is also written as
  * FrenetTangent, FrenetNormal and FrenetBinormal.
  *
@@ -149,6 +153,19 @@ public:
 
   ///@{
   /**
+   * Approximating families (Mode Approximate): correct each point's
+   * parameter towards the curve (projected onto the fit, refitted, three
+   * rounds, for every knot count cross-validation tries) rather than keep
+   * the Parameterization's (default on). Chord lengths between noisy points
+   * carry the noise, and a least squares on them asks for ever more knots.
+   */
+  vtkSetMacro(CorrectParameters, bool);
+  vtkGetMacro(CorrectParameters, bool);
+  vtkBooleanMacro(CorrectParameters, bool);
+  ///@}
+
+  ///@{
+  /**
    * Also write the frame under VMTK's names FrenetTangent, FrenetNormal and
    * FrenetBinormal, so VMTK pipelines keep working. Off by default.
    */
@@ -200,6 +217,7 @@ protected:
   double SampleLength = 1.0;
   double DataShapeTolerance = 1e-6;
   double CurveShapeTolerance = 1e-3;
+  bool CorrectParameters = true;
   bool VMTKArrayNames = false;
 
 private:

@@ -41,6 +41,7 @@ shapesplines::BuiltCurve vtkTensionQuinticSplineFilter::BuildCurve(
   quintic.Gamma = this->Continuity == C3 ? this->Gamma : std::min(this->Gamma, 1.0);
   quintic.Lambda = this->Lambda;
   quintic.ApproximationKnots = this->Mode == APPROXIMATE ? ApproximationKnotCount(this->NumberOfKnots) : 0;
+  quintic.CorrectParameters = this->CorrectParameters;
   return shapesplines::tensionQuinticBuilder(quintic)(context);
 }
 

@@ -85,12 +85,11 @@ public:
 
   ///@{
   /**
-   * Knots of the approximation (default 9; 1 counts as 2), or 0: generalized
-   * cross-validation chooses them per line from the data, balancing bias
-   * against noise (Craven and Wahba). Either way at most half the points and
-   * points - 4 (lines of fewer than 6 points are interpolated). The default
-   * stays 9: on unevenly spaced points this family's least squares with many
-   * knots can leave the data (README, Decisions).
+   * Knots of the approximation (1 counts as 2), or 0 (default): chosen per
+   * line from the data by generalized cross-validation on parameters
+   * corrected towards the curve, the fewest within half a standard error of
+   * the best score (CorrectParameters). At most half the points and
+   * points - 4 (lines of fewer than 6 points are interpolated).
    */
   vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);
   vtkGetMacro(NumberOfKnots, int);
@@ -138,7 +137,7 @@ protected:
 
   int Continuity = C4;
   int Mode = INTERPOLATE;
-  int NumberOfKnots = 9;
+  int NumberOfKnots = 0;
   bool Automatic = true;
   double Gamma = 1.0;
   double Lambda = 1.0;

@@ -59,6 +59,7 @@ shapesplines::BuiltCurve vtkVariableDegreeSplineFilter::BuildCurve(
   options.Lambda = this->Lambda;
   options.ScaleLambdaWithDegree = this->ScaleLambdaWithDegree;
   options.ApproximationKnots = this->Mode == INTERPOLATE ? 0 : ApproximationKnotCount(this->NumberOfKnots);
+  options.CorrectParameters = this->CorrectParameters;
   return shapesplines::variableDegreeBuilder(options)(context);
 }
 

@@ -91,8 +91,9 @@ Options of fit:
                          vdps: interpolate (default), approximate (the local
                          scheme), approximate-global or approximate-local
   --knots N              approximate: number of knots, at most half the points;
-                         0 chooses per line by cross-validation (the vdps
-                         default; the quintic's is 9)
+                         0 (default) chooses per line from the data
+  --keep-parameters      approximate: keep the parameterization's parameters
+                         (default: corrected towards the curve)
   --gamma G, --lambda L  quintic: fixed shape parameters (default 1, 1);
                          vdps: --lambda is the corner cutting tension (1)
   --degree K             vdps: starting (fixed with --fixed) degree (default 5)
@@ -194,7 +195,7 @@ struct Arguments
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
   "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
-const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "quiet", "help" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help" };
 
 Arguments Parse(int argc, char* argv[])
 {
@@ -677,7 +678,7 @@ std::map<std::string, FamilyFactory> Families()
        }
        filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
                                              : vtkTensionQuinticSplineFilter::INTERPOLATE);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 9, 0, 1e6)));
+       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
        filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
        filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
@@ -764,6 +765,7 @@ int Fit(Arguments& args)
     throw UsageError("--parameterization must be chord, centripetal or uniform");
   }
   filter->SetParameterization(parameterizations.at(parameterization));
+  filter->SetCorrectParameters(!args.Flag("keep-parameters"));
   filter->SetClosed(args.Flag("closed"));
   filter->SetVMTKArrayNames(args.Flag("vmtk-names"));
   filter->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));

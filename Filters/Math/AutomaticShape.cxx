@@ -30,7 +30,7 @@ public:
     : Context(context)
     , Reference(reference)
     , Ladder(ladder)
-    , Shape(discreteShape(reference, context.Options.Tolerances))
+    , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise))
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
         context.Options.AuditSubdivisions, context.CoordinateNoise)
@@ -56,6 +56,10 @@ public:
     this->Curve = this->Ladder.Build(this->Levels);
     this->Auditor.auditAll(*this->Curve, progress);
     this->Audit = this->Auditor.result();
+    for (int j = 0; j < this->Spans && this->Ladder.Bounds.CurvatureChange > 0.0; ++j)
+    {
+      this->StartCurvatures.push_back(this->Auditor.sampleCurvatures(j));
+    }
     this->Best = this->Levels;
     this->BestViolations = this->Audit.violations();
     int round = 1;
@@ -89,13 +93,38 @@ private:
   /// What the bounds limit on a span.
   struct Figures
   {
-    double Curvature = 0.0, Speed = 1.0, Deviation = 0.0;
+    double Curvature = 0.0, Speed = 1.0, Deviation = 0.0, Change = 1.0;
   };
 
   Figures figures(int j) const
   {
     return { this->Auditor.largestCurvature(j), this->Auditor.lowestSpeed(j),
-      this->Auditor.largestDeviation(j) };
+      this->Auditor.largestDeviation(j), this->curvatureChange(j) };
+  }
+
+  /// The largest factor between span j's curvature and the level-0 curve's
+  /// at the same samples, where the latter stands above the noise (see
+  /// ShapeBounds::CurvatureChange); 1 when that bound is off.
+  double curvatureChange(int j) const
+  {
+    if (this->Ladder.Bounds.CurvatureChange <= 0.0 || this->StartCurvatures.empty())
+    {
+      return 1.0;
+    }
+    const double chord = this->Reference.segment(j).norm();
+    const double noise =
+      NoiseSignificance * 8.0 * this->Ladder.ReferenceNoise / std::max(chord * chord, 1e-300);
+    const std::vector<double>& start = this->StartCurvatures[j];
+    const std::vector<double>& now = this->Auditor.sampleCurvatures(j);
+    double change = 1.0;
+    for (size_t k = 0; k < start.size() && k < now.size(); ++k)
+    {
+      if (start[k] > noise)
+      {
+        change = std::max({ change, start[k] / std::max(now[k], 1e-300), now[k] / start[k] });
+      }
+    }
+    return change;
   }
 
   /// Span j, or -1 beyond an open curve's ends (closed curves wrap).
@@ -230,7 +259,9 @@ private:
       const Figures now = this->figures(j);
       if ((now.Curvature > this->CurvatureBound && now.Curvature > before[j].Curvature) ||
         (now.Speed < bounds.SpeedFraction && now.Speed < before[j].Speed) ||
-        (now.Deviation > bounds.Deviation && now.Deviation > before[j].Deviation))
+        (now.Deviation > bounds.Deviation && now.Deviation > before[j].Deviation) ||
+        (bounds.CurvatureChange > 0.0 && now.Change > bounds.CurvatureChange &&
+          now.Change > before[j].Change))
       {
         beyond[j] = anyBeyond = true;
       }
@@ -320,6 +351,7 @@ private:
   int WholeAudits = 0;
   std::vector<int> Best;
   int BestViolations = 0;
+  std::vector<std::vector<double>> StartCurvatures; ///< per span, of level 0 (CurvatureChange)
 };
 } // namespace
 

@@ -22,7 +22,8 @@ namespace shapesplines
  * parameter length (a curve that nearly stops makes a cusp), or a span
  * farther from its segment of the reference polygon than Deviation times
  * the longest of that segment and its neighbours (a curve through the
- * points, or near its polygon, has no business away from them).
+ * points, or near its polygon, has no business away from them); nor,
+ * approximating, a curvature far from the fixed parameters' (CurvatureChange).
  */
 struct ShapeBounds
 {
@@ -30,6 +31,12 @@ struct ShapeBounds
   double StraightRunCurvatureFactor = 1e4;
   double SpeedFraction = 1e-3;
   double Deviation = 0.5;
+  /// Approximations (0: none): the curvature at every sample stays within
+  /// this factor of the level-0 curve's, wherever that stands above what the
+  /// reference's noise can bend (NoiseSignificance times the curvature of an
+  /// arc with ShapeLadder::ReferenceNoise of sagitta over the span's
+  /// segment): keeping a noisy polygon's shape must not flatten the curve.
+  double CurvatureChange = 0.0;
 };
 
 /**
@@ -50,6 +57,9 @@ struct ShapeLadder
   bool Uniform = false;
   int MaxRounds = 64;
   ShapeBounds Bounds;
+  /// How far the reference polygon's vertices move with the noise (see
+  /// discreteShape): 0 for an interpolation's data.
+  double ReferenceNoise = 0.0;
 };
 
 /// The automatic mode's curve, its audit against the reference and the levels chosen.

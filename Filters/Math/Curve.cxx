@@ -38,4 +38,28 @@ Derivatives Curve::evaluate(double t, int order) const
   }
   return this->evaluateOnSpan(this->findSpan(t), t, order);
 }
+TrimmedCurve::TrimmedCurve(std::unique_ptr<Curve> whole, int first, int spans)
+  : Curve(std::vector<double>(whole->knots().begin() + first, whole->knots().begin() + first + spans + 1),
+      false)
+  , Whole(std::move(whole))
+  , First(first)
+{
+  this->ConditionEstimate = this->Whole->conditionEstimate();
+}
+
+Derivatives TrimmedCurve::evaluateOnSpan(int span, double t, int order) const
+{
+  return this->Whole->evaluateOnSpan(span + this->First, t, order);
+}
+
+std::vector<SpanParameter> TrimmedCurve::spanParameters() const
+{
+  std::vector<SpanParameter> parameters = this->Whole->spanParameters();
+  for (SpanParameter& p : parameters)
+  {
+    p.Values = std::vector<double>(
+      p.Values.begin() + this->First, p.Values.begin() + this->First + this->numberOfSpans());
+  }
+  return parameters;
+}
 } // namespace shapesplines

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -162,6 +163,25 @@ protected:
   std::vector<double> Knots;
   bool Closed = false;
   double ConditionEstimate = 1.0;
+};
+/**
+ * The spans first..first + spans - 1 of another open curve, as a curve of
+ * their own: an approximation fitted on knots beyond its data's ends (see
+ * extendForApproximation) keeps only its data's stretch.
+ */
+class TrimmedCurve final : public Curve
+{
+public:
+  TrimmedCurve(std::unique_ptr<Curve> whole, int first, int spans);
+
+  Derivatives evaluateOnSpan(int span, double t, int order) const override;
+  std::vector<SpanParameter> spanParameters() const override;
+  /// The curve the spans come from.
+  const Curve& whole() const { return *this->Whole; }
+
+private:
+  std::unique_ptr<Curve> Whole;
+  int First;
 };
 } // namespace shapesplines
 

@@ -1,5 +1,6 @@
 #include "FitPolyline.h"
 
+#include "Approximation.h"
 #include "CubicSpline.h"
 
 #include <algorithm>
@@ -74,6 +75,7 @@ CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& 
   , Speed(std::max(reference.numberOfSpans(), 0), 1.0)
   , Deviation(std::max(reference.numberOfSpans(), 0), 0.0)
   , LocalLength(std::max(reference.numberOfSpans(), 0), 1.0)
+  , SampleCurvatures(std::max(reference.numberOfSpans(), 0))
 {
   // The longest of a segment and its neighbours: how far a curve near the
   // polygon may stray from it there.
@@ -113,6 +115,8 @@ void CurveAuditor::audit(const Curve& curve, int j)
   const double chordSpeed = (values[subdivisions][0] - values[0][0]).norm() / h;
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);
+  std::vector<double>& sampleCurvatures = this->SampleCurvatures[j];
+  sampleCurvatures.resize(subdivisions + 1);
   // Both ends of every span: torsion is one-sided at a knot (the third
   // derivative jumps), so each knot is audited from both sides, and the
   // audit, and the automatic modes driven by it, do not depend on the
@@ -126,6 +130,7 @@ void CurveAuditor::audit(const Curve& curve, int j)
     sample.Flat = frames[k].Curvature <= thresholds[k];
     this->Auditor.add(sample);
     curvature = std::max(curvature, frames[k].Curvature);
+    sampleCurvatures[k] = frames[k].Curvature;
     speed = std::min(speed, values[k][1].norm());
     deviation = std::max(deviation, this->distanceToSegment(values[k][0], j));
   }
@@ -162,9 +167,11 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
-ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference) const
+ShapeAudit FitContext::audit(
+  const Curve& curve, const CleanPolyline& reference, double referenceNoise) const
 {
-  return auditCurve(curve, reference, discreteShape(reference, this->Options.Tolerances),
+  return auditCurve(curve, reference,
+    discreteShape(reference, this->Options.Tolerances, referenceNoise),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
 }
@@ -267,8 +274,14 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   }
   fit.Spline = std::move(built.Spline);
   fit.ShapeReference = std::move(built.ShapeReference);
+  if (built.DataParameters)
+  {
+    fit.Knots = std::move(*built.DataParameters);
+  }
+  fit.NoiseLevel = built.NoiseLevel * fit.Scale;
+  fit.LooksNoisy = !fit.ShapeReference && looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
-  fit.Shape = discreteShape(reference, options.Tolerances);
+  fit.Shape = discreteShape(reference, options.Tolerances, built.ReferenceNoise);
   fit.Audit = built.Audit ? *std::move(built.Audit)
                           : auditCurve(*fit.Spline, reference, fit.Shape, options.Tolerances,
                               options.AuditSubdivisions, fit.CoordinateNoise, options.Progress);

@@ -47,8 +47,9 @@ struct FitContext
 
   /// The audit of a curve against the Definition 1 shape of reference, a
   /// polygon with one vertex per knot of the curve: the data for an
-  /// interpolation, the least-squares polygon for an approximation.
-  ShapeAudit audit(const Curve& curve, const CleanPolyline& reference) const;
+  /// interpolation, the least-squares polygon for an approximation (whose
+  /// vertices move by referenceNoise with the noise, see discreteShape).
+  ShapeAudit audit(const Curve& curve, const CleanPolyline& reference, double referenceNoise = 0.0) const;
 };
 
 /// A family's curve and, for an approximation, the polygon whose shape it keeps.
@@ -61,6 +62,14 @@ struct BuiltCurve
   std::optional<CleanPolyline> ShapeReference;
   /// The audit of Spline against its reference, when the builder has made it.
   std::optional<ShapeAudit> Audit;
+  /// Approximations: the parameter of each data point on the curve, when the
+  /// builder corrected the given ones (planApproximation).
+  std::optional<std::vector<double>> DataParameters;
+  /// Approximations: the points' root-mean-square distance from the curve
+  /// (normalised frame), and how far the reference polygon's vertices can
+  /// move with that noise (see discreteShape).
+  double NoiseLevel = 0.0;
+  double ReferenceNoise = 0.0;
 };
 
 using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;
@@ -83,12 +92,19 @@ struct FittedPolyline
   double ParameterScale = 1.0;  ///< data-unit parameter per normalised parameter
   std::vector<Vec3> KnotPoints; ///< the cleaned points in input coordinates
   double CoordinateNoise = 0.0; ///< rounding of the input coordinates, normalised
-  std::vector<double> Knots;    ///< normalised parameter
+  /// Normalised parameter of each cleaned point (for an approximation, where
+  /// it sits on the curve: corrected, see planApproximation).
+  std::vector<double> Knots;
   std::unique_ptr<Curve> Spline; ///< null when the data has fewer than two distinct points
   /// Approximations: the polygon whose shape the curve keeps (see BuiltCurve).
   std::optional<CleanPolyline> ShapeReference;
   DiscreteShape Shape; ///< of the reference: the data, or ShapeReference
   ShapeAudit Audit;    ///< against that shape
+  /// Approximations: the points' root-mean-square distance from the curve, data units.
+  double NoiseLevel = 0.0;
+  /// Interpolations: the points look noisy to a least squares (looksNoisy):
+  /// the curve's curvature and torsion follow the noise.
+  bool LooksNoisy = false;
   SamplingPlan Plan;
 
   /// Whether the curve passes through the data at its knots.
@@ -140,6 +156,8 @@ public:
   /// Largest distance of span j's samples from the reference's segment j,
   /// over the longest of that segment and its neighbours.
   double largestDeviation(int span) const { return this->Deviation[span]; }
+  /// The curvature at span j's samples, from its start to its end.
+  const std::vector<double>& sampleCurvatures(int span) const { return this->SampleCurvatures[span]; }
 
 private:
   double distanceToSegment(const Vec3& p, int span) const;
@@ -153,6 +171,7 @@ private:
   std::vector<double> Speed;
   std::vector<double> Deviation;
   std::vector<double> LocalLength;
+  std::vector<std::vector<double>> SampleCurvatures;
 };
 
 /// Audits a curve through data on a uniform sampling.
@@ -160,58 +179,9 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
   const ProgressCallback& progress = {});
 
-/// An approximation's knot count chosen from the data by cross-validation
-/// (crossValidatedKnotCount in TensionQuinticSpline.h).
+/// An approximation's knot count chosen from the data (planApproximation in
+/// Approximation.h).
 constexpr int CrossValidatedKnots = -1;
-
-/// The fewest knots an approximation takes: 2, or 3 distinct ones when closed.
-inline int lowestKnotCount(bool closed)
-{
-  return closed ? 3 : 2;
-}
-
-/**
- * An approximating family's fit(knots) for the count asked: requested,
- * clamped to [lowestKnotCount(closed), highest]; or, for CrossValidatedKnots,
- * crossValidated()'s count, and 10% fewer while fit throws (a singular
- * system: a gap in the data leaves a span without points where the family's
- * knots differ from those cross-validation checked), down to the lowest,
- * where the failure is rethrown. A user's count fails as asked. Nothing when
- * the line cannot be approximated (a request below 2 that is not
- * CrossValidatedKnots, or highest below the lowest): the family interpolates.
- */
-template <class Fit, class CrossValidate>
-auto fitWithKnotCount(int requested, bool closed, int highest, const CrossValidate& crossValidated,
-  const Fit& fit) -> std::optional<decltype(fit(highest))>
-{
-  const int lowest = lowestKnotCount(closed);
-  if ((requested < 2 && requested != CrossValidatedKnots) || highest < lowest)
-  {
-    return std::nullopt;
-  }
-  if (requested != CrossValidatedKnots)
-  {
-    return fit(std::clamp(requested, lowest, highest));
-  }
-  for (int knots = crossValidated();; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
-  {
-    try
-    {
-      return fit(knots);
-    }
-    catch (const FitAborted&)
-    {
-      throw; // the user stopped the work: no retry
-    }
-    catch (const std::exception&)
-    {
-      if (knots <= lowest)
-      {
-        throw;
-      }
-    }
-  }
-}
 
 /// Coordinates beyond this are refused: a curve through them (its overshoot,
 /// its arc length) can leave the double range.

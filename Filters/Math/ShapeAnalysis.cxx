@@ -33,7 +33,8 @@ const char* shapeCriterionName(ShapeCriterion criterion)
   }
 }
 
-DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances)
+DiscreteShape discreteShape(
+  const CleanPolyline& data, const ShapeTolerances& tolerances, double vertexNoise)
 {
   const int n = static_cast<int>(data.Points.size());
   const int spans = data.numberOfSpans();
@@ -69,9 +70,13 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const double chord = (data.segment(before) + data.segment(i)).stableNorm();
     // A line that doubles back exactly (I_{i+1} = I_{i-1}) has no circle: 0, not 0/0.
     shape.Curvature[i] = chord > 0 ? 2.0 * shape.Binormal[i].norm() / chord : 0.0;
-    const bool straight = shape.Binormal[i].norm() <= tolerances.Data;
+    const double turn = shape.Binormal[i].norm();
+    const bool straight = turn <= tolerances.Data;
+    // What the vertices' noise can do to the turning sine: both directions turn.
+    const double noiseTurn = 2.0 * vertexNoise * (1.0 / length[before] + 1.0 / length[i]);
+    const bool significant = turn > NoiseSignificance * noiseTurn;
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
-    shape.Convex[i] = !straight;
+    shape.Convex[i] = !straight && significant;
   }
   for (int i = 0; i < spans; ++i)
   {
@@ -89,9 +94,15 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const double triple = a.dot(b.cross(c));
     const double crosses = a.cross(b).norm() * b.cross(c).norm();
     const bool flat = std::abs(triple) <= tolerances.Data || !(crosses > 0);
+    // What the vertices' noise can do to the triple product: each of the
+    // three directions turns by about noise / length out of the others' plane.
+    const double noiseTwist = 2.0 * vertexNoise *
+      (b.cross(c).norm() / length[before] + (a.cross(b).norm() + b.cross(c).norm()) / length[i] +
+        a.cross(b).norm() / length[next]);
+    const bool significant = std::abs(triple) > NoiseSignificance * noiseTwist;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat;
-    shape.Twisted[i] = !flat;
+    shape.Twisted[i] = !flat && significant;
   }
   return shape;
 }

@@ -40,7 +40,21 @@ struct DiscreteShape
   std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies
 };
 
-DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {});
+/**
+ * The discrete shape of data. vertexNoise > 0 (the reference polygon of an
+ * approximation, whose vertices move by about that much with the noise of
+ * the points): a turn or a twist counts only where it stands out of what
+ * that noise can make, NoiseSignificance times the change it causes in the
+ * turning sine (its segments' directions turn by vertexNoise / length) or in
+ * the normalised triple product; below (but above tolerances.Data), the
+ * point is neither convex nor collinear, the segment neither twisted nor
+ * coplanar: no criterion applies there.
+ */
+DiscreteShape discreteShape(
+  const CleanPolyline& data, const ShapeTolerances& tolerances = {}, double vertexNoise = 0.0);
+
+/// How many times the change noise can cause a turn or twist must exceed to count.
+constexpr double NoiseSignificance = 3.0;
 
 enum class ShapeCriterion : int
 {

@@ -1,5 +1,6 @@
 #include "TensionQuinticFit.h"
 
+#include "Approximation.h"
 #include "AutomaticShape.h"
 
 #include <algorithm>
@@ -55,21 +56,32 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
 
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitContext& context)
+  const FitContext& context, double referenceNoise)
 {
-  QuinticApproximation result;
-  result.Knots = uniformKnots(u, closed ? numberOfKnots + 1 : numberOfKnots);
+  const ExtendedData data = extendForApproximation(points, u, numberOfKnots, closed);
+  const int spans = closed ? numberOfKnots : numberOfKnots - 1;
+  const std::vector<Vec3> polygon = leastSquaresPolygon(data.Points, data.Parameters, data.Knots, closed);
   CleanPolyline reference;
-  reference.Points = leastSquaresPolygon(points, u, result.Knots, closed);
+  reference.Points.assign(polygon.begin() + data.Extra, polygon.begin() + data.Extra + (closed ? spans : spans + 1));
   reference.Closed = closed;
   ShapeLadder ladder = quinticLadder(quintic);
+  ladder.ReferenceNoise = referenceNoise;
+  ladder.Bounds.CurvatureChange = 2.0; // keeping L*'s shape must not flatten the fit
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-    return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::approximate(
-      points, u, result.Knots, loweredParameters(quintic, levels, closed), closed));
+    const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
+    auto whole = std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::approximate(
+      data.Points, data.Parameters, data.Knots, loweredParameters(quintic, all, closed), closed));
+    if (data.Extra == 0)
+    {
+      return whole;
+    }
+    return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
   };
   BuiltCurve built = fixedOrAutomatic(quintic.Automatic, context, reference, ladder);
-  result.Spline.reset(static_cast<TensionQuinticSpline*>(built.Spline.release()));
+  QuinticApproximation result;
+  result.Spline = std::move(built.Spline);
   result.Audit = std::move(built.Audit);
+  result.Knots = std::vector<double>(data.Knots.begin() + data.Extra, data.Knots.end() - data.Extra);
   result.Polygon = std::move(reference.Points);
   return result;
 }
@@ -86,25 +98,25 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     const bool closed = context.Data.Closed;
     const int highest = closed ? count / 2 : std::min(count / 2, count - 4);
     const std::vector<Vec3>& points = context.Data.Points;
-    const std::vector<double>& u = context.Knots;
-    std::optional<QuinticApproximation> approximation = fitWithKnotCount(
-      quintic.ApproximationKnots, closed, highest,
-      [&] { return crossValidatedKnotCount(points, u, highest, closed); },
-      [&](int knots) {
-        return approximateKeepingTorsionSigns(points, u, knots, closed, quintic, context);
+    std::optional<BuiltCurve> approximation = approximateWithPlan(points, context.Knots,
+      quintic.ApproximationKnots, closed, highest, quintic.CorrectParameters,
+      [&](const ApproximationPlan& plan, int knots) {
+        const double noise = referenceNoise(plan, knots, count);
+        QuinticApproximation fitted = approximateKeepingTorsionSigns(
+          points, plan.Parameters, knots, closed, quintic, context, noise);
+        BuiltCurve built;
+        built.Spline = std::move(fitted.Spline);
+        built.Audit = std::move(fitted.Audit);
+        CleanPolyline reference;
+        reference.Points = std::move(fitted.Polygon);
+        reference.Closed = closed;
+        built.ShapeReference = std::move(reference);
+        built.DataParameters = plan.Parameters;
+        built.NoiseLevel = plan.NoiseLevel;
+        built.ReferenceNoise = noise;
+        return built;
       });
-    if (!approximation)
-    {
-      return interpolate(context, quintic);
-    }
-    BuiltCurve built;
-    built.Spline = std::move(approximation->Spline);
-    built.Audit = std::move(approximation->Audit);
-    CleanPolyline reference;
-    reference.Points = std::move(approximation->Polygon);
-    reference.Closed = closed;
-    built.ShapeReference = std::move(reference);
-    return built;
+    return approximation ? std::move(*approximation) : interpolate(context, quintic);
   };
 }
 } // namespace shapesplines

@@ -28,6 +28,9 @@ struct QuinticFitOptions
   /// as many as generalized cross-validation chooses for the fixed
   /// parameters, keeping the torsion signs of L* (approximateKeepingTorsionSigns).
   int ApproximationKnots = 0;
+  /// Approximations: correct the points' parameters towards the curve
+  /// (planApproximation) rather than keep the given ones.
+  bool CorrectParameters = true;
 };
 
 /// The family's builder for fitPolyline and the filter.
@@ -36,7 +39,9 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic);
 /// A least-squares approximation and the polygon whose shape it keeps.
 struct QuinticApproximation
 {
-  std::unique_ptr<TensionQuinticSpline> Spline;
+  /// A TensionQuinticSpline, of an open line the stretch of one fitted on
+  /// knots beyond its ends (TrimmedCurve, see extendForApproximation).
+  std::unique_ptr<Curve> Spline;
   std::vector<double> Knots;  ///< placed uniformly in the data parameter (closed: with the closing one)
   std::vector<Vec3> Polygon;  ///< L*, one vertex per (distinct) knot
   std::optional<ShapeAudit> Audit; ///< against L*, when the automatic mode made it
@@ -47,12 +52,13 @@ struct QuinticApproximation
  * the data parameters u) closest in least squares to the points; automatic,
  * it keeps the shape (Definition 1, torsion signs included) of L*, the
  * least-squares polygon on the same knots, lowering the tension from 1 on the
- * spans that break it (preserveShapeAutomatically). Closed: a closed curve
+ * spans that break it (preserveShapeAutomatically), counting only what
+ * stands out of referenceNoise (see discreteShape). Closed: a closed curve
  * with numberOfKnots distinct knots (>= 3), u with the closing parameter.
  */
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitContext& context);
+  const FitContext& context, double referenceNoise = 0.0);
 } // namespace shapesplines
 
 #endif

@@ -137,37 +137,6 @@ private:
   std::vector<std::array<double, 6>> XPower;
   std::vector<std::array<Vec3, 6>> CPower;
 };
-/// count >= 2 knots spread uniformly over the data parameters u, ending
-/// exactly at u's ends: the knots of the least-squares approximations.
-std::vector<double> uniformKnots(const std::vector<double>& u, int count);
-
-/**
- * The knot count K in [2, highest] of a least-squares approximation of points
- * at parameters u, by generalized cross-validation (Craven and Wahba, 1979)
- * of the classical quintic spline (tension 1) on K uniform knots: K
- * minimises N RSS(K) / (N - K - 4)^2 over the N points, the K + 4 de Boor
- * points being the unknowns per coordinate. Closed: K in [3, highest]
- * distinct knots, K unknowns, and u may hold the closing parameter. Too few knots leave a bias,
- * too many fit the noise; the count whose fit best predicts left-out points
- * balances the two without knowing the noise. Every count up to 64, then a
- * grid growing 15% a step, refined between the best point's neighbours; each
- * fit is O(N) (the uniform quintic B-splines' banded normal equations, the
- * same space as the classical quintic's). A candidate whose system is
- * singular (a span without points) is not chosen; with none possible, 2. Both
- * approximating families
- * use it: the variable degree family's clamped ends would make the end
- * spans' residual ask for ever more knots.
- */
-int crossValidatedKnotCount(const std::vector<Vec3>& points, const std::vector<double>& u,
-  int highest, bool closed = false);
-
-/**
- * L*: the piecewise linear curve with vertices at knots closest in least
- * squares to points at parameters u (knots[0] <= u <= knots.back()); closed,
- * one vertex per distinct knot (the last knot closes the polygon).
- */
-std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
-  const std::vector<double>& u, const std::vector<double>& knots, bool closed = false);
 } // namespace shapesplines
 
 #endif

@@ -1,9 +1,9 @@
 #include "VariableDegreeSpline.h"
 
+#include "Approximation.h"
 #include "AutomaticShape.h"
 
 #include "SparseSolve.h"
-#include "TensionQuinticSpline.h" // uniformKnots, leastSquaresPolygon (psi of section 4.2), crossValidatedKnotCount
 
 #include <algorithm>
 #include <cmath>
@@ -370,13 +370,13 @@ VariableDegreeSpline VariableDegreeSpline::interpolate(const std::vector<Vec3>& 
 VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots, bool closed,
   const VariableDegreeParameters& parameters, const std::vector<double>& weights,
-  const std::vector<Vec3>& anchors)
+  const std::vector<Vec3>& anchors, bool clampedEnds)
 {
   const int spans = static_cast<int>(knots.size()) - 1;
   checkParameters(knots, closed, parameters);
   const size_t knotCount = closed ? spans : spans + 1;
   if (u.size() < points.size() || weights.size() != knotCount || anchors.size() != knotCount ||
-    points.size() < knotCount || (closed && spans < 3))
+    points.size() < (closed || clampedEnds ? knotCount : knotCount + 4) || (closed && spans < 3))
   {
     throw std::invalid_argument("variable degree spline: too few points to approximate, or a "
                                 "weight and an anchor missing for some knot");
@@ -388,9 +388,12 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
     nets[i] = spanWeights(e, i);
   }
   // Clamped ends: D_-2 = D_-1 = D_0 and D_m+2 = D_m+1 = D_m, so the unknowns
-  // are D_0..D_m; a closed curve's D_j wrap around.
-  auto column = [&](int j) { return closed ? ((j % spans) + spans) % spans : std::clamp(j, 0, spans); };
-  const int unknowns = static_cast<int>(knotCount);
+  // are D_0..D_m (the polygon limit of Theorem 4 then ends at psi's ends);
+  // free ones, all m + 5; a closed curve's D_j wrap around.
+  auto column = [&](int j) {
+    return closed ? ((j % spans) + spans) % spans : (clampedEnds ? std::clamp(j, 0, spans) : j + 2);
+  };
+  const int unknowns = closed || clampedEnds ? static_cast<int>(knotCount) : spans + 5;
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   auto addSquare = [&](const Weights& w, int span, double weight, const Vec3& target) {
@@ -413,7 +416,7 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
     addSquare(derivativeWeights(pseudoBernstein(e.degree(span), e.degree(span + 1), v), nets[span], 0),
       span, 1.0, points[j]);
   }
-  for (int i = 0; i < unknowns; ++i)
+  for (int i = 0; i < static_cast<int>(knotCount); ++i)
   {
     if (weights[i] > 0.0)
     {
@@ -529,17 +532,18 @@ BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOption
 }
 
 BuiltCurve approximateData(const FitContext& context, const VariableDegreeOptions& options,
-  int knotCount, double startDegree)
+  const ApproximationPlan& plan, int knotCount, double startDegree)
 {
   // knotCount knots, the distinct ones of a closed line (the closing knot repeats the first).
   const bool closed = context.Data.Closed;
   const int spans = closed ? knotCount : knotCount - 1;
-  const std::vector<double>& u = context.Knots;
-  const std::vector<double> knots = uniformKnots(u, spans + 1);
+  const ExtendedData data = extendForApproximation(context.Data.Points, plan.Parameters, knotCount, closed);
+  const int allKnots = closed ? knotCount : static_cast<int>(data.Knots.size());
   CleanPolyline psi;
-  psi.Points = leastSquaresPolygon(context.Data.Points, u, knots, closed);
+  const std::vector<Vec3> polygon = leastSquaresPolygon(data.Points, data.Parameters, data.Knots, closed);
+  psi.Points.assign(polygon.begin() + data.Extra, polygon.begin() + data.Extra + (closed ? spans : spans + 1));
   psi.Closed = closed;
-  const std::vector<double> start(knotCount, startDegree);
+  const std::vector<double> start(allKnots, startDegree);
   const bool local = options.Mode == VariableDegreeMode::ApproximateLocal;
   // The local scheme also pulls the curve towards psi at the knots of raised
   // spans: an anchor's first weight counts like the points of one span, and
@@ -551,19 +555,32 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   ladder.MaxRounds = options.MaxRounds;
   ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
   ladder.Uniform = !local; // the global scheme: every degree together (Theorem 4)
+  const int points = static_cast<int>(context.Data.Points.size());
+  ladder.ReferenceNoise = referenceNoise(plan, knotCount, points);
+  ladder.Bounds.CurvatureChange = 2.0; // keeping psi's shape must not flatten the fit
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-    const std::vector<int> perKnot = knotLevels(levels, closed);
-    std::vector<double> weights(knotCount, 0.0);
-    for (int i = 0; i < knotCount && local; ++i)
+    const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
+    const std::vector<int> perKnot = knotLevels(all, closed);
+    std::vector<double> weights(allKnots, 0.0);
+    for (int i = 0; i < allKnots && local; ++i)
     {
       weights[i] = perKnot[i] == 0 ? 0.0 : firstWeight * std::min(std::pow(4.0, perKnot[i] - 1), 1e6);
     }
-    return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(context.Data.Points,
-      u, knots, closed, parametersFor(degreesAt(start, levels, closed, options.MaxDegree), options, false),
-      weights, psi.Points));
+    auto whole = std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(data.Points,
+      data.Parameters, data.Knots, closed,
+      parametersFor(degreesAt(start, all, closed, options.MaxDegree), options, false), weights, polygon,
+      false));
+    if (data.Extra == 0)
+    {
+      return whole;
+    }
+    return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
   };
   BuiltCurve built = fixedOrAutomatic(options.Automatic, context, psi, ladder);
   built.ShapeReference = std::move(psi);
+  built.DataParameters = plan.Parameters;
+  built.NoiseLevel = plan.NoiseLevel;
+  built.ReferenceNoise = ladder.ReferenceNoise;
   return built;
 }
 } // namespace
@@ -580,10 +597,11 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
     {
       const bool closed = context.Data.Closed;
       const int highest = count / 2;
-      std::optional<BuiltCurve> approximation = fitWithKnotCount(
-        options.ApproximationKnots, closed, highest,
-        [&] { return crossValidatedKnotCount(context.Data.Points, context.Knots, highest, closed); },
-        [&](int knots) { return approximateData(context, capped, knots, start); });
+      std::optional<BuiltCurve> approximation = approximateWithPlan(context.Data.Points,
+        context.Knots, options.ApproximationKnots, closed, highest, options.CorrectParameters,
+        [&](const ApproximationPlan& plan, int knots) {
+          return approximateData(context, capped, plan, knots, start);
+        });
       if (approximation)
       {
         return std::move(*approximation);

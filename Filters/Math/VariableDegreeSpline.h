@@ -77,15 +77,19 @@ public:
   /**
    * Section 4.2: the spline on knots closest in least squares to points at
    * parameters u, plus weight_i |s(knot_i) - anchors_i|^2 per knot (the
-   * weighted local scheme; all weights 0 is the global one). Open: clamped
-   * ends, a weight and an anchor per knot. Closed: knots end with the closing
+   * weighted local scheme; all weights 0 is the global one). Open: a weight
+   * and an anchor per knot, and clamped ends (D_-2 = D_-1 = D_0: Theorem 4's
+   * polygon limit ends at psi's ends) or free ones (the classical quintic's
+   * space at degree 5: clamping straightens the ends of the few spans noisy
+   * points take; the builder's choice, with knots beyond the data's ends,
+   * see extendForApproximation). Closed: knots end with the closing
    * one, a weight and an anchor per distinct knot, and u may hold the closing
    * parameter after the points'.
    */
   static VariableDegreeSpline approximate(const std::vector<Vec3>& points,
     const std::vector<double>& u, const std::vector<double>& knots, bool closed,
     const VariableDegreeParameters& parameters, const std::vector<double>& weights,
-    const std::vector<Vec3>& anchors);
+    const std::vector<Vec3>& anchors, bool clampedEnds = true);
 
   Derivatives evaluateOnSpan(int span, double u, int order) const override;
   /// "Degree" per span: the larger degree of its two knots (cell summary MaxDegree).
@@ -136,6 +140,9 @@ struct VariableDegreeOptions
   /// points), or CrossValidatedKnots: as many as generalized cross-validation
   /// chooses for the start degree.
   int ApproximationKnots = 0;
+  /// Approximations: correct the points' parameters towards the curve
+  /// (planApproximation) rather than keep the given ones.
+  bool CorrectParameters = true;
   int MaxRounds = 64;
 };
 

@@ -562,6 +562,36 @@ inline void ExpectDataPointsAmongSamples(
   }
 }
 
+/**
+ * The largest factor between two runs' curvature at the same samples of one
+ * line, where the first's stands out of what its noise can bend (three
+ * times the curvature of an arc with the reference's vertex noise as sagitta
+ * over a span, from the cell arrays NoiseLevel, NumberOfKnots and Length,
+ * and the line's points): what an automatic approximation may change
+ * (ShapeBounds::CurvatureChange).
+ */
+inline double CurvatureChange(vtkPolyData* fixed, vtkPolyData* automatic, vtkIdType line, double points)
+{
+  const IdList a = LinesOf(fixed)[line], b = LinesOf(automatic)[line];
+  EXPECT_EQ(a.size(), b.size());
+  const double knots = CellArray(fixed, "NumberOfKnots")->GetTuple1(line);
+  const double noise = CellArray(fixed, "NoiseLevel")->GetTuple1(line);
+  const double span = CellArray(fixed, "Length")->GetTuple1(line) / std::max(1.0, knots - 1.0);
+  const double vertexNoise = noise * std::sqrt(std::max(1.0, knots) / std::max(1.0, 0.5 * points));
+  const double floor = 3.0 * 8.0 * vertexNoise / (span * span);
+  double change = 1.0;
+  for (size_t i = 0; i < a.size() && i < b.size(); ++i)
+  {
+    const double k0 = PointArray(fixed, "Curvature")->GetTuple1(a[i]);
+    const double k1 = PointArray(automatic, "Curvature")->GetTuple1(b[i]);
+    if (k0 > floor)
+    {
+      change = std::max({ change, k0 / std::max(k1, 1e-300), k1 / k0 });
+    }
+  }
+  return change;
+}
+
 inline Polyline PointsOfLine(vtkPolyData* polyData, const IdList& line)
 {
   Polyline points;

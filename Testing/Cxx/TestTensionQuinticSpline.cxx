@@ -1,5 +1,6 @@
 // Tensioned quintic parametric B-splines (paper 000): basis properties,
 // continuity, tension limit, the knot system (34) and interpolation.
+#include "Approximation.h"
 #include "TensionQuinticFit.h"
 #include "TensionQuinticSpline.h"
 
@@ -549,192 +550,56 @@ TEST(TensionQuinticSpline, LeastSquaresReproducesPolygonsAndLines)
   }
 }
 
-TEST(TensionQuinticSpline, ApproximationKeepsTheTorsionSignsOfTheLeastSquaresPolygon)
+TEST(TensionQuinticSpline, ApproximationKeepsTheShapeOfTheLeastSquaresPolygonWithoutFlatteningTheCurve)
 {
-  // Paper 000, section 5: nine knots, gamma = lambda = 1 gives the wrong
-  // torsion sign on some span; the automatic choice does not.
+  // Section 5 of Cravero, Manni and Sampoli: on noisy points with nine
+  // knots, the least squares at gamma = lambda = 1 can break the torsion
+  // signs of L* (the least-squares polygon on the same knots). The automatic
+  // mode lowers the tension where it does, but never changes the curvature
+  // by more than a factor of 2 where it stands out of the noise: never more
+  // violations, never a flattened stretch.
   const auto points = perturbedBean(60, 0.01);
   for (const auto continuity : { QuinticContinuity::C3, QuinticContinuity::C4 })
   {
-    FitOptions fit;
     QuinticFitOptions quintic;
     quintic.Continuity = continuity;
+    quintic.ApproximationKnots = 9;
     quintic.Automatic = false;
-    CleanPolyline data;
-    data.Points = points;
-    const auto u = computeKnots(data, Parameterization::ChordLength);
-    const FitContext context{ data, u, fit, 0.0, {} };
-    auto torsionSignViolations = [&](const QuinticApproximation& a) {
-      CleanPolyline polygon;
-      polygon.Points = a.Polygon;
-      const ShapeAudit audit = a.Audit ? *a.Audit : context.audit(*a.Spline, polygon);
-      return audit.Failures[int(ShapeCriterion::TorsionSignAtKnot)] +
-        audit.Failures[int(ShapeCriterion::TorsionSignOnSpan)];
-    };
-    const auto plain = approximateKeepingTorsionSigns(points, u, 9, false, quintic, context);
+    const FittedPolyline plain = fitPolyline(points, FitOptions{}, tensionQuinticBuilder(quintic));
     quintic.Automatic = true;
-    const auto automatic = approximateKeepingTorsionSigns(points, u, 9, false, quintic, context);
-    const auto& p = automatic.Spline->parameters();
-    std::printf("%s bean: torsion sign violations plain %d, automatic %d; smallest gamma %.3g lambda %.3g\n",
-      continuity == QuinticContinuity::C3 ? "C3" : "C4", torsionSignViolations(plain),
-      torsionSignViolations(automatic), *std::min_element(p.Gamma.begin(), p.Gamma.end()),
-      p.Lambda.empty() ? 1.0 : *std::min_element(p.Lambda.begin(), p.Lambda.end()));
-    EXPECT_GT(torsionSignViolations(plain), 0);
-    EXPECT_EQ(torsionSignViolations(automatic), 0);
+    const FittedPolyline automatic = fitPolyline(points, FitOptions{}, tensionQuinticBuilder(quintic));
+    const SampledCurve a = sampleFit(plain), b = sampleFit(automatic);
+    ASSERT_EQ(a.Samples.size(), b.Samples.size());
+    // The floor: the curvature of an arc whose sagitta is the reference's
+    // vertex noise, over a span (see ShapeBounds::CurvatureChange), times 3.
+    const double span = a.Samples.Length / 8.0;
+    const double vertexNoise = plain.NoiseLevel * std::sqrt(9.0 / 30.0);
+    const double floor = 3.0 * 8.0 * vertexNoise / (span * span);
+    double change = 1.0;
+    for (int k = 0; k < a.Samples.size(); ++k)
+    {
+      const double k0 = a.Frames[k].Curvature, k1 = b.Frames[k].Curvature;
+      change = k0 > floor ? std::max({ change, k0 / k1, k1 / k0 }) : change;
+    }
+    std::printf("%s bean: violations of L* plain %d, automatic %d; largest curvature change %.3g\n",
+      continuity == QuinticContinuity::C3 ? "C3" : "C4", plain.Audit.violations(),
+      automatic.Audit.violations(), change);
+    EXPECT_LE(automatic.Audit.violations(), plain.Audit.violations());
+    EXPECT_LE(change, 2.0 + 1e-9);
+    ASSERT_FALSE(automatic.interpolates());
     // Still an approximation of the data: within a few noise levels.
     double worst = 0.0;
     for (size_t j = 0; j < points.size(); ++j)
     {
-      worst = std::max(worst, (automatic.Spline->evaluate(u[j], 0)[0] - points[j]).norm());
+      worst = std::max(worst, (automatic.Spline->evaluate(automatic.Knots[j], 0)[0] * automatic.Scale +
+                                automatic.Origin - points[j]).norm());
     }
     std::printf("  largest distance to the data %.3f\n", worst);
     EXPECT_LT(worst, 0.2);
   }
 }
 
-namespace
-{
-/// test::helix(perTurn, turns) with seeded Gaussian noise of deviation sigma.
-std::vector<Vec3> noisyHelix(int perTurn, int turns, double sigma, unsigned seed)
-{
-  std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, sigma);
-  std::vector<Vec3> points = test::helix(perTurn, turns);
-  for (Vec3& p : points)
-  {
-    p += Vec3(noise(rng), noise(rng), noise(rng));
-  }
-  return points;
-}
-
-/// N RSS / (N - unknowns)^2 for every knot count up to highest (infinity
-/// below the lowest), by the classical quintic's own least squares (gamma =
-/// 1, the knot system and the X inversion included): what
-/// crossValidatedKnotCount minimises. Closed: counts of distinct knots.
-std::vector<double> crossValidationScores(
-  const std::vector<Vec3>& points, const std::vector<double>& u, int highest, bool closed)
-{
-  const double count = static_cast<double>(points.size());
-  std::vector<double> scores(highest + 1, std::numeric_limits<double>::infinity());
-  for (int knots = closed ? 3 : 2; knots <= highest; ++knots)
-  {
-    const auto curve = TensionQuinticSpline::approximate(points, u,
-      shapesplines::uniformKnots(u, closed ? knots + 1 : knots),
-      QuinticParameters::uniform(QuinticContinuity::C4, knots, 1.0, 1.0), closed);
-    double rss = 0.0;
-    for (size_t j = 0; j < points.size(); ++j)
-    {
-      rss += (curve.evaluate(u[j], 0)[0] - points[j]).squaredNorm();
-    }
-    const double freedom = count - (closed ? knots : knots + 4);
-    scores[knots] = count * rss / (freedom * freedom);
-  }
-  return scores;
-}
-
-int bestCount(const std::vector<double>& scores)
-{
-  return static_cast<int>(std::min_element(scores.begin(), scores.end()) - scores.begin());
-}
-} // namespace
-
-TEST(TensionQuinticSpline, CrossValidationChoosesKnotsThatKeepTheNoiseOutOfTheTorsion)
-{
-  // Helix a = 2, b = 1 (torsion 0.2), 6 turns at 32 points per turn, Gaussian
-  // noise of 0.5% of the radius (the benchmark's case): every knot the data
-  // allow (96) follows the noise; cross-validation must choose fewer.
-  const std::vector<Vec3> points = noisyHelix(32, 6, 0.01, 3);
-  FitOptions options;
-  options.Knots = Parameterization::Uniform;
-  // Median relative torsion error on the middle half, and the knots used.
-  auto approximate = [&](int knots) {
-    QuinticFitOptions quintic;
-    quintic.Automatic = false;
-    quintic.ApproximationKnots = knots;
-    const FittedPolyline fit = fitPolyline(points, options, tensionQuinticBuilder(quintic));
-    const SampledCurve sampled = sampleFit(fit);
-    const std::vector<double>& t = sampled.Samples.Parameter;
-    const double quarter = 0.25 * (t.back() - t.front());
-    std::vector<double> errors;
-    for (size_t k = 0; k < t.size(); ++k)
-    {
-      if (t[k] >= t.front() + quarter && t[k] <= t.back() - quarter)
-      {
-        errors.push_back(std::abs(sampled.Frames[k].Torsion - 0.2) / 0.2);
-      }
-    }
-    std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-    return std::make_pair(errors[errors.size() / 2], fit.Spline->numberOfSpans() + 1);
-  };
-  const auto [chosenError, chosenKnots] = approximate(CrossValidatedKnots);
-  const auto [allError, allKnots] = approximate(1000);
-  std::printf("noisy helix: cross-validation chose %d knots, median torsion error %.2f%%; "
-              "%d knots: %.1f%%\n",
-    chosenKnots, 100 * chosenError, allKnots, 100 * allError);
-  EXPECT_GE(chosenKnots, 12);
-  EXPECT_LE(chosenKnots, 60);
-  EXPECT_LT(chosenError, 0.05);
-  EXPECT_EQ(allKnots, 96);
-  EXPECT_GT(allError, 0.2);
-  // Without noise smoothing gains nothing: the count stays near the largest.
-  const std::vector<Vec3> clean = test::helix(32, 6);
-  CleanPolyline data;
-  data.Points = clean;
-  const int cleanKnots =
-    crossValidatedKnotCount(clean, computeKnots(data, Parameterization::Uniform), 96);
-  std::printf("clean helix: cross-validation chose %d knots of 96\n", cleanKnots);
-  EXPECT_GE(cleanKnots, 72);
-}
-
-TEST(TensionQuinticSpline, CrossValidationFindsTheBestCountOfTheClassicalQuinticLeastSquares)
-{
-  // Up to 64 knots every count is tried: the search (on the uniform
-  // B-splines' residuals) must land on the best of the classical quintic's scan.
-  for (const unsigned seed : { 7u, 8u, 9u })
-  {
-    const auto points = perturbedBean(80, 0.01, seed);
-    CleanPolyline data;
-    data.Points = points;
-    const auto u = computeKnots(data, Parameterization::ChordLength);
-    const int best = bestCount(crossValidationScores(points, u, 40, false));
-    const int chosen = crossValidatedKnotCount(points, u, 40);
-    std::printf("noisy bean (seed %u): cross-validation chose %d knots, the scan of every count %d\n",
-      seed, chosen, best);
-    EXPECT_EQ(chosen, best);
-  }
-  // Beyond, the 15% grid and its refinement: within 2% of the best score.
-  CleanPolyline data;
-  data.Points = noisyHelix(64, 12, 0.002, 4);
-  const auto u = computeKnots(data, Parameterization::Uniform);
-  const auto scores = crossValidationScores(data.Points, u, 300, false);
-  const int chosen = crossValidatedKnotCount(data.Points, u, 300);
-  std::printf("noisy helix, 769 points: cross-validation chose %d knots, score %.4g of the best %.4g (%d)\n",
-    chosen, scores[chosen], scores[bestCount(scores)], bestCount(scores));
-  EXPECT_GT(chosen, 64);
-  EXPECT_LE(scores[chosen], 1.02 * scores[bestCount(scores)]);
-}
-
-TEST(TensionQuinticSpline, CrossValidationLeavesNoSpanWithoutPoints)
-{
-  // Two noisy clusters of 50 points, at parameters [0, 1] and [9, 10]: with
-  // 4 or more uniform knots a span falls in the gap. Noise alone would ask
-  // for more knots; no candidate may leave a span empty.
-  std::mt19937 rng(21);
-  std::normal_distribution<double> noise(0.0, 0.01);
-  std::vector<Vec3> points;
-  std::vector<double> u;
-  for (int j = 0; j < 100; ++j)
-  {
-    u.push_back(j < 50 ? j / 49.0 : 9.0 + (j - 50) / 49.0);
-    points.emplace_back(std::cos(u.back()) + noise(rng), std::sin(u.back()) + noise(rng), noise(rng));
-  }
-  const int chosen = crossValidatedKnotCount(points, u, 50);
-  std::printf("two clusters: cross-validation chose %d knots\n", chosen);
-  EXPECT_GE(chosen, 2);
-  EXPECT_LE(chosen, 3);
-}
-
-TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValidate)
+TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSpline)
 {
   // A closed C4 quintic through 7 space points on uneven knots: least squares
   // on its own knots from 90 of its points give it back.
@@ -769,22 +634,6 @@ TEST(TensionQuinticSpline, ClosedLeastSquaresReproduceAClosedSplineAndCrossValid
         << "order " << order << " at " << at;
     }
   }
-  // Cross-validation of a closed line (cyclic normal equations) lands on the
-  // best count of a scan by the closed classical quintic's own least squares.
-  std::normal_distribution<double> noise(0.0, 0.01);
-  CleanPolyline data;
-  data.Closed = true;
-  for (int i = 0; i < 120; ++i)
-  {
-    const double t = 2.0 * test::Pi * i / 120;
-    data.Points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t) + noise(rng),
-      std::cos(t) - 2.0 * std::cos(2.0 * t) + noise(rng), -std::sin(3.0 * t) + noise(rng));
-  }
-  const auto v = computeKnots(data, Parameterization::Uniform);
-  const int best = bestCount(crossValidationScores(data.Points, v, 40, true));
-  const int chosen = crossValidatedKnotCount(data.Points, v, 40, true);
-  std::printf("noisy closed trefoil: cross-validation chose %d knots, the scan %d\n", chosen, best);
-  EXPECT_EQ(chosen, best);
 }
 
 TEST(TensionQuinticSpline, AutomaticModeOnClosedLines)

@@ -254,14 +254,22 @@ TEST(TensionQuinticSplineFilter, ApproximationTakesAtMostHalfThePointsAsKnots)
     vtkNew<vtkTensionQuinticSplineFilter> filter;
     filter->SetModeToApproximate();
     filter->AutomaticOff();
+    filter->CorrectParametersOff(); // the points' own parameters, as before the correction
     filter->SetNumberOfKnots(asked);
     filter->SetNumberOfSubdivisions(2);
     vtkPolyData* output = run(filter, input);
     EXPECT_EQ(output->GetNumberOfPoints(), 23 * 2 + 1) << asked; // 24 knots, 23 spans
-    double range[2];
-    output->GetPointData()->GetArray("Curvature")->GetRange(range);
-    EXPECT_LT(range[1], 0.8) << asked;
-    EXPECT_GT(range[0], 0.2) << asked;
+    // Between the end spans (whose curvature the mirrored end points draw
+    // towards 0, see extendForApproximation).
+    vtkDataArray* curvature = output->GetPointData()->GetArray("Curvature");
+    double low = 1e300, high = 0.0;
+    for (vtkIdType i = 2; i + 2 < output->GetNumberOfPoints(); ++i)
+    {
+      low = std::min(low, curvature->GetTuple1(i));
+      high = std::max(high, curvature->GetTuple1(i));
+    }
+    EXPECT_LT(high, 0.8) << asked;
+    EXPECT_GT(low, 0.2) << asked;
   }
 }
 

@@ -81,22 +81,23 @@ TEST(VariableDegreeSplineFilter, DegreePerPointFromAnInputArray)
   }
 }
 
-TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsi)
+TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsiWithoutFlatteningTheCurve)
 {
+  // Both automatic schemes against degree 5 on the aorta with 40 knots:
+  // never more violations of psi's shape (where it stands out of the noise),
+  // never a curvature more than 2 times off the degree 5 curve's where that
+  // stands out of the noise (flattening a curved stretch to keep a noisy
+  // polygon's shape is what the automatic mode must not do).
   const auto data = ReadData("aorta-centerline.vtp");
-  const FilterRun fixed = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
-    f->SetModeToApproximateLocal();
-    f->SetNumberOfKnots(40);
-    f->AutomaticDegreesOff();
-  });
-  for (vtkIdType c = 0; c < 2; ++c)
-  {
-    Measure("aorta line " + std::to_string(c) + ", degree 5: violations of psi",
-      CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c));
-    EXPECT_GT(CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c), 0);
-  }
+  const std::vector<double> points = { 211.0, 198.0 }; // each line's points
   for (const int mode : { VariableDegree::APPROXIMATE_GLOBAL, VariableDegree::APPROXIMATE_LOCAL })
   {
+    const FilterRun fixed = RunFilter<VariableDegree>(data, [mode](VariableDegree* f) {
+      f->SetMode(mode);
+      f->SetNumberOfKnots(40);
+      f->SetNumberOfSubdivisions(4);
+      f->AutomaticDegreesOff();
+    });
     const FilterRun run = RunFilter<VariableDegree>(data, [mode](VariableDegree* f) {
       f->SetMode(mode);
       f->SetNumberOfKnots(40);
@@ -110,9 +111,15 @@ TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsi)
     {
       // 40 knots, 39 spans of 4 samples: the approximation's own knots, not the data's.
       EXPECT_EQ(lines[c].size(), 39u * 4u + 1u) << "line " << c;
-      Measure("aorta line " + std::to_string(c) + ", mode " + std::to_string(mode) + ": violations of psi",
-        CellArray(run.Output, "ShapeViolations")->GetTuple1(c));
-      EXPECT_EQ(CellArray(run.Output, "ShapeViolations")->GetTuple1(c), 0) << "line " << c;
+      const double before = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
+      const double after = CellArray(run.Output, "ShapeViolations")->GetTuple1(c);
+      const double change = CurvatureChange(fixed.Output, run.Output, c, points[c]);
+      Measure("aorta line " + std::to_string(c) + ", mode " + std::to_string(mode) +
+          ": violations of psi, degree 5 then automatic",
+        before * 1000 + after);
+      Measure("  largest curvature change", change);
+      EXPECT_LE(after, before) << "line " << c;
+      EXPECT_LE(change, 2.0 + 1e-9) << "line " << c;
     }
   }
 }
@@ -160,7 +167,7 @@ TEST(ApproximatingFilters, NumberOfKnotsZeroLetsCrossValidationChoose)
     f->SetModeToApproximateLocal();
     f->AutomaticDegreesOff();
   };
-  EXPECT_EQ(vtkNew<Quintic>()->GetNumberOfKnots(), 9); // see README, Decisions
+  EXPECT_EQ(vtkNew<Quintic>()->GetNumberOfKnots(), 0);
   EXPECT_EQ(vtkNew<VariableDegree>()->GetNumberOfKnots(), 0);
   const auto [quinticKnots, quinticError] = ApproximateNoisyHelix(quintic, 0);
   const auto [variableKnots, variableError] = ApproximateNoisyHelix(variableDegree, 0);
@@ -169,37 +176,66 @@ TEST(ApproximatingFilters, NumberOfKnotsZeroLetsCrossValidationChoose)
   Measure("noisy helix, quintic: median curvature error", quinticError);
   Measure("noisy helix, variable degree: median curvature error", variableError);
   Measure("noisy helix, quintic with 96 knots: median curvature error", allError);
-  // Both families take the count the quintic's cross-validation chooses: fewer
-  // than the 96 the points allow, which follow the noise.
+  // Both families take the count chosen from the data: fewer than the 96
+  // the points allow, which follow the noise. (The fewest knots within half
+  // a standard error of the best score lean to the smooth side: 1.3% at the
+  // best score's count here, 2.7% at the one taken, which on randomly
+  // sampled trefoils halves the worst torsion error.)
   EXPECT_EQ(variableKnots, quinticKnots);
   EXPECT_EQ(allKnots, 96);
   EXPECT_GE(quinticKnots, 12);
   EXPECT_LE(quinticKnots, 60);
-  EXPECT_LT(quinticError, 0.02);
-  EXPECT_LT(variableError, 0.02);
+  EXPECT_LT(quinticError, 0.03);
+  EXPECT_LT(variableError, 0.03);
   EXPECT_GT(allError, 2 * quinticError);
 }
 
-TEST(ApproximatingFilters, CrossValidatedKnotsSurviveGapsInTheData)
+TEST(ApproximatingFilters, TheAortaCenterlineAtTheDefaults)
 {
-  // The aorta centerline's chords reach 8 times their median: 95 knots left
-  // spans without points and both approximations failed ("singular spline
-  // system"). The variable degree curve on the knots chosen now stays within
-  // 1% of the length of the cubic through the points.
+  // Both approximating families at their defaults on the shipped aorta
+  // centerline (uneven chords up to 8 times their median, repeated points,
+  // a curled end): within 1% of the length of the cubic through the points,
+  // no hook at the ends (before the ends were continued by mirrored points,
+  // the least squares' ends followed the last points into curvatures of 12
+  // to 16; the data's own end curls by about 100 degrees in its last 2.5
+  // mm), and never more violations of the reference polygon's shape than
+  // the fixed parameters leave.
   const auto data = ReadData("aorta-centerline.vtp");
-  const FilterRun approximation = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
-    f->SetModeToApproximateGlobal();
-    f->AutomaticDegreesOff();
-  });
   const FilterRun cubic = RunFilter<vtkCubicSplineFilter>(data);
-  EXPECT_TRUE(approximation.Errors.empty()) << Joined(approximation.Errors);
-  ASSERT_EQ(LinesOf(approximation.Output).size(), 2u);
-  for (vtkIdType c = 0; c < 2; ++c)
+  const std::vector<std::pair<std::string, std::function<FilterRun(bool)>>> runs = {
+    { "quintic", [&](bool automatic) {
+       return RunFilter<Quintic>(data, [automatic](Quintic* f) {
+         f->SetModeToApproximate();
+         f->SetAutomatic(automatic);
+       });
+     } },
+    { "variable degree", [&](bool automatic) {
+       return RunFilter<VariableDegree>(data, [automatic](VariableDegree* f) {
+         f->SetModeToApproximateLocal();
+         f->SetAutomaticDegrees(automatic);
+       });
+     } } };
+  for (const auto& [name, run] : runs)
   {
-    const double length = CellArray(approximation.Output, "Length")->GetTuple1(c);
-    const double through = CellArray(cubic.Output, "Length")->GetTuple1(c);
-    Measure("aorta line " + std::to_string(c) + ": approximation length / cubic length", length / through);
-    EXPECT_NEAR(length / through, 1.0, 0.01);
+    const FilterRun fixed = run(false), approximation = run(true);
+    EXPECT_TRUE(approximation.Errors.empty()) << Joined(approximation.Errors);
+    ASSERT_EQ(LinesOf(approximation.Output).size(), 2u);
+    for (vtkIdType c = 0; c < 2; ++c)
+    {
+      const double length = CellArray(approximation.Output, "Length")->GetTuple1(c);
+      const double through = CellArray(cubic.Output, "Length")->GetTuple1(c);
+      const double largest = MaxAbs(PointArray(approximation.Output, "Curvature"), LinesOf(approximation.Output)[c]);
+      const double before = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
+      const double after = CellArray(approximation.Output, "ShapeViolations")->GetTuple1(c);
+      Measure(name + ", aorta line " + std::to_string(c) + ": length / cubic's", length / through);
+      Measure("  largest curvature", largest);
+      Measure("  knots", CellArray(approximation.Output, "NumberOfKnots")->GetTuple1(c));
+      Measure("  noise level", CellArray(approximation.Output, "NoiseLevel")->GetTuple1(c));
+      Measure("  violations, fixed then automatic", 1000 * before + after);
+      EXPECT_NEAR(length / through, 1.0, 0.01);
+      EXPECT_LT(largest, 2.5);
+      EXPECT_LE(after, before);
+    }
   }
 }
 

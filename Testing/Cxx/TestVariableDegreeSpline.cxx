@@ -3,7 +3,7 @@
 // shape preservation, accuracy and the approximation schemes.
 #include "VariableDegreeSpline.h"
 #include "MathTestUtilities.h"
-#include "TensionQuinticSpline.h" // leastSquaresPolygon
+#include "Approximation.h" // leastSquaresPolygon
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,501 @@
+#include "Approximation.h"
+
+#include "SparseSolve.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+
+namespace shapesplines
+{
+std::vector<double> uniformKnots(const std::vector<double>& u, int count)
+{
+  std::vector<double> knots;
+  for (int i = 0; i < count; ++i)
+  {
+    knots.push_back(u.front() + (u.back() - u.front()) * i / (count - 1));
+  }
+  knots.back() = u.back();
+  return knots;
+}
+
+namespace
+{
+/// Every count up to 64 (GCV is bumpy there: on a noisy 80-point line 14
+/// knots scored 6% above 19, with 15-18 between); beyond, 15% steps.
+std::vector<int> candidateCounts(int lowest, int highest)
+{
+  constexpr int EveryCountUpTo = 64;
+  constexpr double GridGrowth = 1.15;
+  std::vector<int> grid;
+  for (int knots = lowest; knots <= highest;
+       knots = knots < EveryCountUpTo ? knots + 1 : static_cast<int>(knots * GridGrowth))
+  {
+    grid.push_back(knots);
+  }
+  if (!grid.empty() && grid.back() != highest)
+  {
+    grid.push_back(highest);
+  }
+  return grid;
+}
+
+/// N RSS / (N - unknowns)^2, or infinity where there are too few points.
+double gcvScore(double rss, double points, int knots, bool closed)
+{
+  const double freedom = points - (closed ? knots : knots + 4); // the de Boor points of the fit
+  return freedom > 0 ? points * rss / (freedom * freedom) : std::numeric_limits<double>::infinity();
+}
+
+/**
+ * The scores of the counts the search needs: the grid, then the counts
+ * between the best grid point's neighbours (ternary search: GCV is close to
+ * unimodal there). score() is called once per count; it returns infinity
+ * for a count that cannot be fitted. The scored counts, in order.
+ */
+std::map<int, double> scoreCounts(
+  int lowest, int highest, const std::function<double(int)>& score)
+{
+  std::map<int, double> scores;
+  auto scored = [&](int knots) {
+    const auto known = scores.find(knots);
+    return known != scores.end() ? known->second : (scores[knots] = score(knots));
+  };
+  const std::vector<int> grid = candidateCounts(lowest, highest);
+  if (grid.empty())
+  {
+    return scores;
+  }
+  size_t best = 0;
+  for (size_t i = 0; i < grid.size(); ++i)
+  {
+    best = scored(grid[i]) < scored(grid[best]) ? i : best;
+  }
+  int low = grid[best == 0 ? 0 : best - 1];
+  int high = grid[std::min(best + 1, grid.size() - 1)];
+  while (high - low > 2)
+  {
+    const int left = low + (high - low) / 3;
+    const int right = high - (high - low) / 3;
+    if (scored(left) <= scored(right))
+    {
+      high = right;
+    }
+    else
+    {
+      low = left;
+    }
+  }
+  for (int knots = low; knots <= high; ++knots)
+  {
+    scored(knots);
+  }
+  return scores;
+}
+} // namespace
+
+QuinticFit::QuinticFit(const std::vector<double>& knots, bool closed)
+  : Spans(static_cast<int>(knots.size()) - 1)
+  , Closed(closed)
+  , First(knots.front())
+  , Last(knots.back())
+{
+  // The full knot vector: five more beyond each end, repeated (open: a
+  // clamped quintic) or continued by the period (closed).
+  const double period = this->Last - this->First;
+  for (int j = -Degree; j <= this->Spans + Degree; ++j)
+  {
+    if (!closed)
+    {
+      this->T.push_back(knots[std::clamp(j, 0, this->Spans)]);
+      continue;
+    }
+    const int wraps = j < 0 ? -1 : (j > this->Spans ? 1 : 0);
+    this->T.push_back(knots[j - wraps * this->Spans] + wraps * period);
+  }
+}
+
+int QuinticFit::unknown(int j) const
+{
+  return this->Closed ? ((j % this->Spans) + this->Spans) % this->Spans : j;
+}
+
+int QuinticFit::locate(double u) const
+{
+  const auto begin = this->T.begin() + Degree;
+  const auto it = std::upper_bound(begin, begin + this->Spans + 1, u);
+  return std::clamp(static_cast<int>(it - begin) - 1, 0, this->Spans - 1);
+}
+
+std::array<std::array<double, QuinticFit::Degree + 1>, 3> QuinticFit::basis(int span, double u) const
+{
+  // Piegl and Tiller's algorithm A2.3: the six quintic B-splines nonzero on
+  // the span (coefficients span..span + 5) and their first two derivatives.
+  constexpr int p = Degree;
+  const int i = span + p; // the span's start in T
+  std::array<std::array<double, p + 1>, p + 1> ndu{};
+  std::array<double, p + 1> left{}, right{};
+  ndu[0][0] = 1.0;
+  for (int j = 1; j <= p; ++j)
+  {
+    left[j] = u - this->T[i + 1 - j];
+    right[j] = this->T[i + j] - u;
+    double saved = 0.0;
+    for (int r = 0; r < j; ++r)
+    {
+      ndu[j][r] = right[r + 1] + left[j - r];
+      const double temp = ndu[r][j - 1] / ndu[j][r];
+      ndu[r][j] = saved + right[r + 1] * temp;
+      saved = left[j - r] * temp;
+    }
+    ndu[j][j] = saved;
+  }
+  std::array<std::array<double, p + 1>, 3> ders{};
+  for (int j = 0; j <= p; ++j)
+  {
+    ders[0][j] = ndu[j][p];
+  }
+  std::array<std::array<double, p + 1>, 2> a{};
+  for (int r = 0; r <= p; ++r)
+  {
+    int s1 = 0, s2 = 1;
+    a[0].fill(0.0);
+    a[1].fill(0.0);
+    a[0][0] = 1.0;
+    for (int k = 1; k <= 2; ++k)
+    {
+      double d = 0.0;
+      const int rk = r - k, pk = p - k;
+      if (r >= k)
+      {
+        a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+        d = a[s2][0] * ndu[rk][pk];
+      }
+      const int j1 = rk >= -1 ? 1 : -rk;
+      const int j2 = r - 1 <= pk ? k - 1 : p - r;
+      for (int j = j1; j <= j2; ++j)
+      {
+        a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][rk + j];
+        d += a[s2][j] * ndu[rk + j][pk];
+      }
+      if (r <= pk)
+      {
+        a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+        d += a[s2][k] * ndu[r][pk];
+      }
+      ders[k][r] = d;
+      std::swap(s1, s2);
+    }
+  }
+  for (int j = 0; j <= p; ++j)
+  {
+    ders[1][j] *= p;
+    ders[2][j] *= p * (p - 1);
+  }
+  return ders;
+}
+
+std::optional<QuinticFit> QuinticFit::solve(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed)
+{
+  QuinticFit fit(knots, closed);
+  const int spans = fit.Spans;
+  // B-spline span + a (a = 0..5) is nonzero on span; a closed curve's wrap around.
+  const int unknowns = closed ? spans : spans + 5;
+  // Upper band of the normal matrix by unwrapped index: band(i, d) = (B^T B)(i, i + d).
+  Eigen::Matrix<double, Eigen::Dynamic, 6> band = Eigen::Matrix<double, Eigen::Dynamic, 6>::Zero(spans + 5, 6);
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  std::vector<char> spanHasPoints(spans, 0);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    const int span = fit.locate(u[j]);
+    const auto b = fit.basis(span, std::clamp(u[j], fit.T[span + Degree], fit.T[span + Degree + 1]))[0];
+    spanHasPoints[span] = 1;
+    for (int a = 0; a < 6; ++a)
+    {
+      for (int c = a; c < 6; ++c)
+      {
+        band(span + a, c - a) += b[a] * b[c];
+      }
+      rhs.row(fit.unknown(span + a)) += b[a] * points[j].transpose();
+    }
+  }
+  // A span without points is decided by its neighbours' alone: on the aorta
+  // centerline (chords up to 8 times their median) such least squares went
+  // singular, or nearly (a curve 2000 times too long).
+  if (std::find(spanHasPoints.begin(), spanHasPoints.end(), 0) != spanHasPoints.end())
+  {
+    return std::nullopt;
+  }
+  Triplets entries; // the lower triangle, as SimplicialLDLT reads it; wrapped entries add up
+  for (int i = 0; i < spans + 5; ++i)
+  {
+    for (int d = 0; d < 6 && i + d < spans + 5; ++d)
+    {
+      const int row = fit.unknown(i + d), column = fit.unknown(i);
+      if (d > 0 && row == column)
+      {
+        entries.emplace_back(row, row, 2.0 * band(i, d)); // both (i, i + d) and (i + d, i)
+      }
+      else
+      {
+        entries.emplace_back(std::max(row, column), std::min(row, column), band(i, d));
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> normal(unknowns, unknowns);
+  normal.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>>
+    solver(normal);
+  const Eigen::VectorXd pivots = solver.vectorD();
+  // Pivots at rounding level of the largest: as good as a span without points.
+  if (solver.info() != Eigen::Success || pivots.minCoeff() <= 1e-12 * pivots.maxCoeff())
+  {
+    return std::nullopt;
+  }
+  fit.Coefficients = solver.solve(rhs);
+  return fit;
+}
+
+std::array<Vec3, 3> QuinticFit::evaluate(double u) const
+{
+  const int span = this->locate(u);
+  u = std::clamp(u, this->T[span + Degree], this->T[span + Degree + 1]);
+  const auto b = this->basis(span, u);
+  std::array<Vec3, 3> out;
+  out.fill(Vec3::Zero());
+  for (int a = 0; a < 6; ++a)
+  {
+    const Vec3 c = this->Coefficients.row(this->unknown(span + a)).transpose();
+    for (int r = 0; r < 3; ++r)
+    {
+      out[r] += b[r][a] * c;
+    }
+  }
+  return out;
+}
+
+double QuinticFit::nearest(const Vec3& p, double u) const
+{
+  // Newton on (s(u) - p) . s'(u) = 0; three steps from a nearby start.
+  for (int step = 0; step < 3; ++step)
+  {
+    const std::array<Vec3, 3> d = this->evaluate(u);
+    const Vec3 r = d[0] - p;
+    const double slope = d[1].squaredNorm() + r.dot(d[2]);
+    if (!(slope > 0.0))
+    {
+      break;
+    }
+    u = std::clamp(u - r.dot(d[1]) / slope, this->First, this->Last);
+  }
+  return u;
+}
+
+double QuinticFit::residual(const std::vector<Vec3>& points, const std::vector<double>& u) const
+{
+  double rss = 0.0;
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    rss += (this->evaluate(u[j])[0] - points[j]).squaredNorm();
+  }
+  return rss;
+}
+
+ExtendedData extendForApproximation(
+  const std::vector<Vec3>& points, const std::vector<double>& u, int knotCount, bool closed)
+{
+  ExtendedData data;
+  const int n = static_cast<int>(points.size());
+  if (closed || n < 3)
+  {
+    data.Points = points;
+    data.Parameters = u;
+    data.Knots = uniformKnots(u, closed ? knotCount + 1 : knotCount);
+    return data;
+  }
+  // The points within two mean spacings of an end (at least two; repeated
+  // points near an end give no leverage), at most a quarter of them.
+  const double a = u.front(), b = u[n - 1];
+  const double reach = 2.0 * (b - a) / (n - 1);
+  auto mirrored = [&](auto distance) {
+    int count = 2;
+    while (count < n / 4 && distance(count + 1) <= reach)
+    {
+      ++count;
+    }
+    return std::min(count, n - 1);
+  };
+  const int head = mirrored([&](int k) { return u[k] - a; });
+  const int tail = mirrored([&](int k) { return b - u[n - 1 - k]; });
+  for (int k = head; k >= 1; --k)
+  {
+    data.Points.push_back(2.0 * points.front() - points[k]);
+    data.Parameters.push_back(2.0 * a - u[k]);
+  }
+  data.Points.insert(data.Points.end(), points.begin(), points.end());
+  data.Parameters.insert(data.Parameters.end(), u.begin(), u.begin() + n);
+  for (int k = 1; k <= tail; ++k)
+  {
+    data.Points.push_back(2.0 * points.back() - points[n - 1 - k]);
+    data.Parameters.push_back(2.0 * b - u[n - 1 - k]);
+  }
+  // One span beyond each end, as long as the mirrored points reach.
+  const std::vector<double> inside = uniformKnots(u, knotCount);
+  data.Knots.push_back(data.Parameters.front());
+  data.Knots.insert(data.Knots.end(), inside.begin(), inside.end());
+  data.Knots.push_back(data.Parameters.back());
+  data.Extra = 1;
+  return data;
+}
+
+std::vector<int> extendedLevels(const std::vector<int>& levels, int extra)
+{
+  std::vector<int> all(extra, levels.front());
+  all.insert(all.end(), levels.begin(), levels.end());
+  all.insert(all.end(), extra, levels.back());
+  return all;
+}
+
+namespace
+{
+/// A knot count's fit with the parameters corrected towards it (three
+/// rounds of projecting every point onto the fit from where it was), and
+/// the squared distances left. Nothing when a fit is singular.
+struct CorrectedFit
+{
+  std::vector<double> Parameters;
+  double Residual = std::numeric_limits<double>::infinity();
+};
+
+CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u, int knots,
+  bool closed, bool correct)
+{
+  auto fitTo = [&](const std::vector<double>& parameters) {
+    const ExtendedData data = extendForApproximation(points, parameters, knots, closed);
+    return QuinticFit::solve(data.Points, data.Parameters, data.Knots, closed);
+  };
+  constexpr int Rounds = 3;
+  for (int round = 0; correct && round < Rounds; ++round)
+  {
+    const auto fit = fitTo(u);
+    if (!fit)
+    {
+      return {};
+    }
+    // The first point and an open line's last keep their parameters (the
+    // curve's ends), and the points their order.
+    const size_t last = closed ? points.size() : points.size() - 1;
+    for (size_t j = 1; j < last; ++j)
+    {
+      u[j] = std::clamp(fit->nearest(points[j], u[j]), u[j - 1], u[last]);
+    }
+  }
+  const auto fit = fitTo(u);
+  if (!fit)
+  {
+    return {};
+  }
+  return { u, fit->residual(points, u) };
+}
+} // namespace
+
+ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::vector<double>& u,
+  int highest, bool closed, int requestedKnots, bool correctParameters)
+{
+  const double count = static_cast<double>(points.size());
+  const int lowest = lowestKnotCount(closed);
+  std::map<int, CorrectedFit> fits;
+  auto fitted = [&](int knots) -> const CorrectedFit& {
+    const auto known = fits.find(knots);
+    return known != fits.end() ? known->second
+                               : (fits[knots] = correctedFit(points, u, knots, closed, correctParameters));
+  };
+  int chosen = std::clamp(requestedKnots, lowest, std::max(lowest, highest));
+  if (requestedKnots == CrossValidatedKnots)
+  {
+    const std::map<int, double> scores = scoreCounts(lowest, highest,
+      [&](int knots) { return gcvScore(fitted(knots).Residual, count, knots, closed); });
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& entry : scores)
+    {
+      best = std::min(best, entry.second);
+    }
+    // The fewest knots within half a standard error of the best score.
+    const double acceptable = best * (1.0 + 0.5 * std::sqrt(2.0 / count));
+    chosen = lowest;
+    for (const auto& [knots, score] : scores)
+    {
+      if (score <= acceptable)
+      {
+        chosen = knots;
+        break;
+      }
+    }
+  }
+  ApproximationPlan plan;
+  const CorrectedFit& fit = fitted(chosen);
+  plan.Knots = chosen;
+  plan.Parameters = std::isfinite(fit.Residual) ? fit.Parameters : u;
+  plan.NoiseLevel = std::isfinite(fit.Residual) ? std::sqrt(fit.Residual / count) : 0.0;
+  return plan;
+}
+
+bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, bool closed)
+{
+  const int count = static_cast<int>(points.size());
+  constexpr int FewestPoints = 20;
+  if (count < FewestPoints)
+  {
+    return false;
+  }
+  auto score = [&](int knots) {
+    const auto fit = QuinticFit::solve(points, u, uniformKnots(u, closed ? knots + 1 : knots), closed);
+    return fit ? gcvScore(fit->residual(points, u), count, knots, closed)
+               : std::numeric_limits<double>::infinity();
+  };
+  return score(count / 3) < score(count / 2);
+}
+
+double referenceNoise(const ApproximationPlan& plan, int knots, int points)
+{
+  return plan.NoiseLevel * std::sqrt(std::max(1.0, static_cast<double>(knots)) / (0.5 * points));
+}
+
+std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed)
+{
+  const int spans = static_cast<int>(knots.size()) - 1;
+  const int k = closed ? spans : spans + 1; // a closed polygon's last vertex is its first
+  Triplets normal;
+  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(k, 3);
+  for (size_t j = 0; j < points.size(); ++j)
+  {
+    const int span = std::clamp(
+      static_cast<int>(std::upper_bound(knots.begin(), knots.end(), u[j]) - knots.begin()) - 1, 0,
+      spans - 1);
+    const double w = (u[j] - knots[span]) / (knots[span + 1] - knots[span]);
+    const double hat[2] = { 1.0 - w, w };
+    const int vertex[2] = { span, (span + 1) % k };
+    for (int a = 0; a < 2; ++a)
+    {
+      for (int b = 0; b < 2; ++b)
+      {
+        normal.emplace_back(vertex[a], vertex[b], hat[a] * hat[b]);
+      }
+      rhs.row(vertex[a]) += hat[a] * points[j].transpose();
+    }
+  }
+  const Eigen::MatrixX3d solution = solveSparse(k, normal, rhs);
+  std::vector<Vec3> vertices(k);
+  for (int i = 0; i < k; ++i)
+  {
+    vertices[i] = solution.row(i).transpose();
+  }
+  return vertices;
+}
+} // namespace shapesplines

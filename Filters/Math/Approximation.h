@@ -1,0 +1,207 @@
+// ShapeSplines math core: what the approximating families share: the
+// classical quintic least squares on uniform knots, the knot count by
+// cross-validation, the parameters corrected towards the curve, the
+// least-squares polygon of reference.
+#ifndef shapesplines_Approximation_h
+#define shapesplines_Approximation_h
+
+#include "Curve.h"
+#include "FitPolyline.h" // CrossValidatedKnots
+#include "Sampler.h"   // FitAborted
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace shapesplines
+{
+/// count >= 2 knots spread uniformly over the data parameters u, ending
+/// exactly at u's ends: the knots of the least-squares approximations.
+std::vector<double> uniformKnots(const std::vector<double>& u, int count);
+
+/**
+ * The classical quintic spline (C4; tension 1 in both approximating
+ * families' spaces) on the given knots (open: clamped, spans + 5 B-splines;
+ * closed: periodic, the last knot closing), closest in least squares to
+ * points at parameters u (within the knots): banded normal equations, O(N).
+ */
+class QuinticFit
+{
+public:
+  static constexpr int Degree = 5;
+
+  /// The fit, or nothing when a span holds no point or the normal equations
+  /// are singular (a span decided by its neighbours' points alone).
+  static std::optional<QuinticFit> solve(const std::vector<Vec3>& points,
+    const std::vector<double>& u, const std::vector<double>& knots, bool closed);
+
+  /// Position and its first two derivatives at u.
+  std::array<Vec3, 3> evaluate(double u) const;
+  /// The parameter of the fit's point nearest p, by Newton steps from u,
+  /// kept within the knots.
+  double nearest(const Vec3& p, double u) const;
+  /// Sum of the squared distances from the points to the fit at u.
+  double residual(const std::vector<Vec3>& points, const std::vector<double>& u) const;
+
+private:
+  QuinticFit(const std::vector<double>& knots, bool closed);
+  int unknown(int j) const;
+  int locate(double u) const;
+  /// The six B-splines nonzero on a span (coefficients span..span + 5) and
+  /// their first two derivatives at u.
+  std::array<std::array<double, Degree + 1>, 3> basis(int span, double u) const;
+
+  int Spans;
+  bool Closed;
+  double First, Last;
+  std::vector<double> T; ///< the full knot vector, Degree more at each end
+  Eigen::MatrixX3d Coefficients;
+};
+
+/**
+ * The data an approximation with knotCount knots is fitted to. Open lines:
+ * the points with the two next to each end mirrored through it (p_-k =
+ * 2 p_0 - p_k, parameters likewise), and knotCount uniform knots over the
+ * points' parameters with one more at each end, where the mirrored points
+ * end (Extra = 1 span beyond each end). A least squares has no condition at its ends: its end
+ * spans follow the last few points wherever their noise goes, into a hook
+ * (on the shipped aorta centerline, curvature 16 where the vessel's is
+ * below 1); the mirrored points make the ends continue the curve instead
+ * (an odd continuation, whose second derivative at the end is about zero).
+ * The fit's stretch between the data's ends is kept (TrimmedCurve). Closed
+ * lines have no ends: the points, and knotCount distinct uniform knots.
+ */
+struct ExtendedData
+{
+  std::vector<Vec3> Points;
+  std::vector<double> Parameters;
+  std::vector<double> Knots;
+  int Extra = 0;
+};
+
+ExtendedData extendForApproximation(const std::vector<Vec3>& points,
+  const std::vector<double>& u, int knotCount, bool closed);
+
+/// Per span of an approximation on extended knots (ExtendedData), the level
+/// of the data's span it continues: levels beyond an end take the end's.
+std::vector<int> extendedLevels(const std::vector<int>& levels, int extra);
+
+/// What an approximation of noisy points rests on (planApproximation).
+struct ApproximationPlan
+{
+  /// Per point: its parameter, the given one or corrected towards the curve
+  /// (the ends kept, the order kept).
+  std::vector<double> Parameters;
+  int Knots = 0; ///< the knot count (distinct knots of a closed line)
+  /// The points' root-mean-square distance from the classical quintic
+  /// least squares on those knots and parameters: the noise of the points,
+  /// as far as the fit can tell.
+  double NoiseLevel = 0.0;
+};
+
+/**
+ * Parameters and knot count for approximating noisy, unevenly spaced points.
+ * Chord lengths between noisy points carry the noise (where the noise is as
+ * large as the spacing, they are mostly noise), and a least squares on them
+ * fits the parameters' jitter with ever more knots. So, for each knot count,
+ * the parameters start from u and are corrected towards the fit (each point
+ * projected onto the classical quintic least squares, three rounds: the
+ * classical parameter correction, Hoschek 1988), and the count is judged by
+ * generalized cross-validation of the points' distances from that fit. Of
+ * the counts within half a standard error of the best score (the score's
+ * relative error is about sqrt(2 / N)), the fewest is taken: curvature and
+ * torsion are second and third derivatives, which the last few knots a
+ * position-based score accepts only make noisier (after Breiman's
+ * one-standard-error rule; a whole standard error let bias into coarse
+ * helices, none let noise into the torsion of randomly sampled trefoils). Counts whose fit is singular (a span without points) are not
+ * candidates. requestedKnots: a count to use (clamped to [lowest, highest])
+ * instead of choosing one; correctParameters false keeps u.
+ */
+ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::vector<double>& u,
+  int highest, bool closed, int requestedKnots, bool correctParameters);
+
+/**
+ * Whether points at parameters u look noisy to a least squares: the
+ * classical quintic on a third as many knots as points predicts them
+ * better (generalized cross-validation) than on half as many, so
+ * cross-validation keeps far fewer knots than points. Clean points, even
+ * coarse ones, fit better and better as knots are added. False for fewer
+ * than 20 points.
+ */
+bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, bool closed);
+
+/// How far the vertices of a reference polygon on `knots` knots (L*, psi)
+/// move with the noise of `points` points: the noise level over the root of
+/// the points a vertex rests on (about 2 N / K: its two spans).
+double referenceNoise(const ApproximationPlan& plan, int knots, int points);
+
+/// The fewest knots an approximation takes: 2, or 3 distinct ones when closed.
+inline int lowestKnotCount(bool closed)
+{
+  return closed ? 3 : 2;
+}
+
+/// Whether a request for knots (a count, or CrossValidatedKnots) approximates
+/// a line that can take `highest` knots at most; otherwise it is interpolated.
+inline bool approximates(int requested, bool closed, int highest)
+{
+  return (requested >= 2 || requested == CrossValidatedKnots) && highest >= lowestKnotCount(closed);
+}
+
+/**
+ * An approximating family's fit(plan, knots): planApproximation's plan (the
+ * parameters corrected when correctParameters) and count, the requested one
+ * clamped to [lowestKnotCount(closed), highest] or for CrossValidatedKnots
+ * the chosen one, and then 10% fewer while fit throws (a singular system: a
+ * gap in the data leaves a span without points where the family's knots
+ * differ from the plan's), down to the lowest, where the failure is
+ * rethrown. A user's count fails as asked. Nothing when the line cannot be
+ * approximated (approximates() false): the family interpolates.
+ */
+template <class Fit>
+auto approximateWithPlan(const std::vector<Vec3>& points, const std::vector<double>& u,
+  int requested, bool closed, int highest, bool correctParameters, const Fit& fit)
+  -> std::optional<decltype(fit(std::declval<const ApproximationPlan&>(), highest))>
+{
+  if (!approximates(requested, closed, highest))
+  {
+    return std::nullopt;
+  }
+  const ApproximationPlan plan =
+    planApproximation(points, u, highest, closed, requested, correctParameters);
+  const int lowest = lowestKnotCount(closed);
+  for (int knots = plan.Knots;; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
+  {
+    try
+    {
+      return fit(plan, knots);
+    }
+    catch (const FitAborted&)
+    {
+      throw; // the user stopped the work: no retry
+    }
+    catch (const std::exception&)
+    {
+      if (requested != CrossValidatedKnots || knots <= lowest)
+      {
+        throw;
+      }
+    }
+  }
+}
+
+/**
+ * L*: the piecewise linear curve with vertices at knots closest in least
+ * squares to points at parameters u (knots[0] <= u <= knots.back()); closed,
+ * one vertex per distinct knot (the last knot closes the polygon).
+ */
+std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed = false);
+} // namespace shapesplines
+
+#endif
