@@ -1,6 +1,7 @@
 #include "ShapeAnalysis.h"
 
 #include <algorithm>
+#include <numeric>
 
 namespace shapesplines
 {
@@ -139,6 +140,7 @@ ShapeAuditor::ShapeAuditor(
   const double diagonal = boundingBoxDiagonal(data.Points);
   this->Scale = diagonal > 0 ? diagonal : 1.0;
   this->Findings.resize(std::max(data.numberOfSpans(), 0));
+  this->TransitionTwist.resize(this->Findings.size());
 }
 
 void ShapeAuditor::fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA,
@@ -150,6 +152,37 @@ void ShapeAuditor::fail(const AuditSample& sample, ShapeCriterion criterion, int
 void ShapeAuditor::forget(int span)
 {
   this->Findings[span].clear();
+  this->TransitionTwist[span].clear();
+}
+
+bool ShapeAuditor::twistReversesAt(int i) const
+{
+  const int spans = this->Data.numberOfSpans();
+  if (!this->Data.Closed && (i <= 0 || i >= spans))
+  {
+    return false;
+  }
+  const int before = (i - 1 + spans) % spans, after = i % spans;
+  const DiscreteShape& shape = this->Shape;
+  return shape.Twisted[before] && shape.Twisted[after] &&
+    shape.Torsion[before] * shape.Torsion[after] < 0;
+}
+
+double ShapeAuditor::transitionDeficiency(int span) const
+{
+  const std::vector<double>& twist = this->TransitionTwist[span];
+  const auto right = [](double deficiency) { return deficiency == 0.0; };
+  const auto first = std::find_if(twist.begin(), twist.end(), right);
+  if (first == twist.end())
+  {
+    // Never the data's sign: the sign change is not where the data's is.
+    return std::accumulate(twist.begin(), twist.end(), 0.0);
+  }
+  const auto last = std::find_if(twist.rbegin(), twist.rend(), right).base();
+  const double leading = std::accumulate(twist.begin(), first, 0.0);
+  const double trailing = std::accumulate(last, twist.end(), 0.0);
+  return (this->twistReversesAt(span) ? 0.0 : leading) + std::accumulate(first, last, 0.0) +
+    (this->twistReversesAt(span + 1) ? 0.0 : trailing);
 }
 
 double ShapeAuditor::signedCurvature(const FrenetFrame& f, int point) const
@@ -239,12 +272,17 @@ void ShapeAuditor::add(const AuditSample& s)
     }
   }
   // (iv.2) torsion sign inside a twisted span, where the curve bends.
-  if (bends && shape.Twisted[j])
+  if (shape.Twisted[j])
   {
-    const double twist = f.Torsion * sign(shape.Torsion[j]) * this->Scale;
-    if (twist < -tolerance)
+    const double twist = bends ? f.Torsion * sign(shape.Torsion[j]) * this->Scale : 0.0;
+    const double deficiency = twist < -tolerance ? -twist - tolerance : 0.0;
+    if (this->twistReversesAt(j) || this->twistReversesAt(j + 1))
     {
-      this->fail(s, ShapeCriterion::TorsionSignOnSpan, j, j, j, -twist - tolerance);
+      this->TransitionTwist[j].push_back(deficiency);
+    }
+    else if (deficiency > 0.0)
+    {
+      this->fail(s, ShapeCriterion::TorsionSignOnSpan, j, j, j, deficiency);
     }
   }
 }
@@ -255,7 +293,17 @@ ShapeAudit ShapeAuditor::result() const
   const size_t spans = this->Findings.size();
   audit.SpanMask.assign(spans, 0u);
   audit.SpanDeficiency.assign(spans, 0.0);
-  for (const auto& found : this->Findings)
+  std::vector<std::vector<Finding>> findings = this->Findings;
+  for (size_t j = 0; j < spans; ++j)
+  {
+    const double deficiency = this->transitionDeficiency(static_cast<int>(j));
+    if (deficiency > 0.0)
+    {
+      const int span = static_cast<int>(j);
+      findings[j].push_back({ { ShapeCriterion::TorsionSignOnSpan, span }, { span, span }, deficiency });
+    }
+  }
+  for (const auto& found : findings)
   {
     for (const Finding& f : found)
     {

@@ -109,13 +109,18 @@ struct ShapeAudit
 };
 
 /**
- * Audits a curve, given one sample at a time in any order, against the
- * discrete shape of its data: which criteria of Definition 1 fail on which
- * span. Sign conditions fail only when the signed value, made scale-free
+ * Audits a curve, given one sample at a time (spans in any order, the samples
+ * of a span in order along it), against the discrete shape of its data:
+ * which criteria of Definition 1 fail on which span. Sign conditions fail only when the signed value, made scale-free
  * with the data's bounding-box diagonal, drops below -tolerances.Curve: a
  * vanishing value is not a sign change; likewise only samples whose
  * scale-free curvature exceeds tolerances.Curve have an osculating plane, and
- * a torsion, to check. What a sample finds is kept with its span, so that the samples of
+ * a torsion, to check. Where the data's torsion changes sign at a knot, a
+ * curve whose torsion is continuous (C3 and smoother) must pass through zero,
+ * and (iv) would ask it to do so exactly at the knot: there the torsion may
+ * change sign once anywhere on the two spans around the knot (the samples of
+ * the wrong sign must run from the knot), as (ii.2) lets the curvature change
+ * sign on a span whose ends turn opposite ways. What a sample finds is kept with its span, so that the samples of
  * one span can be audited again (forget(), then add()) after the curve
  * changed there. The data and shape must outlive the auditor.
  */
@@ -139,12 +144,19 @@ private:
   void fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA, int spanB,
     double deficiency);
   double signedCurvature(const FrenetFrame& frame, int point) const;
+  /// Whether the data's torsion changes sign at knot i (both segments twisted).
+  bool twistReversesAt(int i) const;
+  /// A span next to such a knot: the torsion's failure beyond the one sign change allowed.
+  double transitionDeficiency(int span) const;
 
   const CleanPolyline& Data;
   const DiscreteShape& Shape;
   ShapeTolerances Tolerances;
   double Scale = 1.0;
   std::vector<std::vector<Finding>> Findings; ///< per span whose samples found them
+  /// Per span next to a knot where the data's torsion changes sign: each
+  /// inside sample's wrong-sign torsion beyond tolerance (0: right sign), in order.
+  std::vector<std::vector<double>> TransitionTwist;
 };
 
 /// The audit of a whole sequence of samples.

@@ -141,6 +141,17 @@ double torsionRounding(const Fitted& fitted, int k)
   return area > 0.0 ? bound / fitted.Fit.Scale : 0.0;
 }
 
+/**
+ * Where the curve is all but straight, a radius of curvature beyond 1e3 times
+ * the data's size (a natural end next to a knot of degree 40: curvature
+ * 1e-10 to 1e-6 of the size's inverse), the torsion is a ratio of rounding
+ * errors, 50% apart between equivalent inputs: it has no value to compare.
+ */
+bool nearlyStraight(const FrenetFrame& frame, const std::vector<Vec3>& data)
+{
+  return frame.Curvature * boundingBoxDiagonal(data) < 1e-3;
+}
+
 class Invariance : public ::testing::TestWithParam<Family>
 {
 };
@@ -171,9 +182,12 @@ void expectTransformed(const Family& family, Map map, double scale, double hande
     const FrenetFrame& fa = a.Sampled.Frames[k];
     const FrenetFrame& fb = b.Sampled.Frames[k];
     EXPECT_NEAR(fb.Curvature * scale, fa.Curvature, 1e-10 * fa.Curvature + zeroCurvature) << k;
-    EXPECT_NEAR(fb.Torsion * scale, handedness * fa.Torsion,
-      1e-9 * (1 + std::abs(fa.Torsion)) + torsionRounding(a, k))
-      << k;
+    if (!nearlyStraight(fa, data))
+    {
+      EXPECT_NEAR(fb.Torsion * scale, handedness * fa.Torsion,
+        1e-9 * (1 + std::abs(fa.Torsion)) + torsionRounding(a, k))
+        << k;
+    }
   }
   EXPECT_EQ(a.Fit.Audit.violations(), b.Fit.Audit.violations());
 }
@@ -226,7 +240,7 @@ TEST_P(Invariance, ReversalTracesTheSameCurveBackwards)
     // At a knot the torsion is one-sided (the third derivative of a C2 curve
     // jumps there): the sample takes the span after it, which reversal makes the
     // span before it. Between knots it must agree.
-    if (k % 7 != 0)
+    if (k % 7 != 0 && !nearlyStraight(f.Frames[k], data))
     {
       EXPECT_NEAR(
         b.Frames[r].Torsion, f.Frames[k].Torsion, 1e-8 * (1 + std::abs(f.Frames[k].Torsion)))

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 
 using namespace shapesplines;
 using namespace shapesplines::test;
@@ -137,6 +138,47 @@ TEST(ShapeAudit, VanishingValuesAreNotSignChanges)
     f.Torsion = 0;
   }));
   EXPECT_TRUE(audit.preserving());
+}
+
+TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
+{
+  // (t, t^2, t^4): torsion 48 t / |r' x r''|^2 changes sign at t = 0, point 4.
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double t = -1.0 + 0.25 * i;
+    points.emplace_back(t, t * t, t * t * t * t);
+  }
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, cubicBuilder());
+  const DiscreteShape& shape = fit.Shape;
+  const int knot = 4;
+  for (int j = knot - 2; j <= knot + 1; ++j)
+  {
+    ASSERT_TRUE(shape.Twisted[j]) << j;
+    ASSERT_EQ(shape.Torsion[j] > 0, j >= knot) << j; // a single change, at the knot
+  }
+  const SampledCurve sampled = sampleFit(fit);
+  // The curve's torsion as a function of u, in spans from the first point.
+  auto failing = [&](const std::function<double(double)>& torsion) {
+    std::vector<AuditSample> samples(sampled.Samples.size());
+    for (int k = 0; k < sampled.Samples.size(); ++k)
+    {
+      samples[k].Span = sampled.Samples.Span[k];
+      samples[k].Frame = sampled.Frames[k];
+      samples[k].Frame.Torsion = torsion(samples[k].Span + sampled.Samples.SpanFraction[k]);
+    }
+    markKnots(samples, false);
+    return failures(auditShape(fit.Data, shape, samples), ShapeCriterion::TorsionSignOnSpan);
+  };
+  auto crossingAt = [](double where) { return [where](double u) { return u - where; }; };
+  EXPECT_EQ(failing(crossingAt(knot)), 0);       // Definition 1's own case
+  EXPECT_EQ(failing(crossingAt(knot - 0.6)), 0); // in the span before the knot
+  EXPECT_EQ(failing(crossingAt(knot + 0.6)), 0); // in the span after it
+  // A span too early: wrong after the crossing, and the whole span before the knot.
+  EXPECT_EQ(failing(crossingAt(knot - 1.4)), 2);
+  EXPECT_EQ(failing(crossingAt(knot + 1.4)), 2);
+  // Right at both ends of the span before the knot, wrong in its middle: three changes.
+  EXPECT_EQ(failing([](double u) { return u > 3.3 && u < 3.5 ? 1.0 : u - knot; }), 1);
 }
 
 TEST(DiscreteShape, ExactDoublingBackIsFinite)

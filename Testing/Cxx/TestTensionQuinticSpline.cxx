@@ -664,11 +664,22 @@ TEST(TensionQuinticSpline, AutomaticModeOnClosedLines)
         continuity == QuinticContinuity::C3 ? "C3" : "C4", plain.Audit.violations(),
         automatic.Audit.violations());
       ASSERT_TRUE(automatic.Spline->isClosed());
-      EXPECT_GT(plain.Audit.violations(), 0);
       EXPECT_TRUE(test::withinBounds(test::boundFigures(automatic)));
-      // The rectangle's straight sides would need a cusp at its corners (see
-      // expectAutomaticImproves); the coarse trefoil gets no violation.
-      EXPECT_LE(automatic.Audit.violations(), points.size() == trefoil.size() ? 0 : plain.Audit.violations());
+      if (points.size() == trefoil.size())
+      {
+        // Where the coarse trefoil's torsion changes sign between its points,
+        // the quintic's continuous torsion does so within the spans around
+        // that knot, which the audit allows; nothing else fails.
+        EXPECT_EQ(plain.Audit.violations(), 0);
+        EXPECT_EQ(automatic.Audit.violations(), 0);
+      }
+      else
+      {
+        // The rectangle's straight sides would need a cusp at its corners
+        // (see expectAutomaticImproves).
+        EXPECT_GT(plain.Audit.violations(), 0);
+        EXPECT_LE(automatic.Audit.violations(), plain.Audit.violations());
+      }
     }
   }
 }
