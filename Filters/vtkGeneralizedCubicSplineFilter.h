@@ -110,6 +110,7 @@ protected:
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
   const char* GetPointValuesArrayName() override;
+  bool AdjustsShape() const override { return this->AutomaticTension; }
 
   int SpaceKind = EXPONENTIAL;
   bool AutomaticTension = true;

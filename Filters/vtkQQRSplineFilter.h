@@ -163,6 +163,7 @@ protected:
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
   const char* GetPointValuesArrayName() override;
+  bool AdjustsShape() const override { return this->Automatic; }
 
   int Mode = INTERPOLATE;
   bool Automatic = true;

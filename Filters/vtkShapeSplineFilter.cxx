@@ -23,6 +23,7 @@
 #include <exception>
 #include <initializer_list>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <utility>
@@ -203,6 +204,35 @@ vtkSmartPointer<Array> Renamed(Array* source, const char* name)
   copy->SetName(name);
   return copy;
 }
+
+/// Where an audit fails, criterion by criterion: "torsion sign on span at
+/// spans 3, 7, ...; convexity at knot at knot 5" (at most a few places each).
+std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
+{
+  constexpr int ShownPlaces = 4;
+  std::ostringstream text;
+  for (size_t k = 0; k < audit.Where.size();)
+  {
+    const auto criterion = audit.Where[k].Criterion;
+    size_t end = k;
+    while (end < audit.Where.size() && audit.Where[end].Criterion == criterion)
+    {
+      ++end;
+    }
+    const bool atKnot = criterion == shapesplines::ShapeCriterion::ConvexityAtKnot ||
+      criterion == shapesplines::ShapeCriterion::TorsionSignAtKnot ||
+      criterion == shapesplines::ShapeCriterion::Collinearity;
+    text << (k > 0 ? "; " : "") << shapesplines::shapeCriterionName(criterion) << " at "
+         << (atKnot ? "knot" : "span") << (end - k > 1 ? "s " : " ");
+    for (size_t j = k; j < end && j < k + ShownPlaces; ++j)
+    {
+      text << (j > k ? ", " : "") << audit.Where[j].Where;
+    }
+    text << (end - k > ShownPlaces ? ", ..." : "");
+    k = end;
+  }
+  return text.str();
+}
 } // namespace
 
 vtkShapeSplineFilter::vtkShapeSplineFilter() = default;
@@ -332,6 +362,7 @@ int vtkShapeSplineFilter::RequestData(
   // thread-safe); then the arrays are written in parallel, a line per task.
   std::vector<size_t> kept; // lines in the output, in input order
   int noisyLines = 0;
+  std::vector<size_t> violatingLines;
   std::vector<vtkIdType> firstSample(1, 0);
   for (size_t k = 0; k < lines.size(); ++k)
   {
@@ -371,6 +402,10 @@ int vtkShapeSplineFilter::RequestData(
                                     << " or resample the line.");
     }
     noisyLines += fit.LooksNoisy ? 1 : 0;
+    if (this->AdjustsShape() && fit.Spline && !fit.Audit.preserving())
+    {
+      violatingLines.push_back(k);
+    }
     if (fit.Plan.LengthIncreased)
     {
       vtkWarningMacro("Line (cell " << line.CellId
@@ -385,6 +420,27 @@ int vtkShapeSplineFilter::RequestData(
     vtkWarningMacro(<< noisyLines << " line(s) interpolated through points that look noisy (a least "
                     << "squares keeps far fewer knots than points): their curvature and torsion "
                     << "follow the noise. Mode Approximate gives the curve's own.");
+  }
+  if (!violatingLines.empty())
+  {
+    // One message a run: the lines' curves are the best met within the
+    // automatic mode's bounds (no cusp, no runaway curvature).
+    constexpr size_t DescribedLines = 3;
+    std::ostringstream lineText;
+    for (size_t j = 0; j < violatingLines.size() && j < DescribedLines; ++j)
+    {
+      const LineWork& line = lines[violatingLines[j]];
+      lineText << " Line (cell " << line.CellId << "): " << DescribeFailures(line.Fit.Audit) << ".";
+    }
+    if (violatingLines.size() > DescribedLines)
+    {
+      lineText << " And " << violatingLines.size() - DescribedLines << " more line(s).";
+    }
+    vtkWarningMacro(<< violatingLines.size() << " line(s) keep shape violations the automatic mode "
+                    << "could not remove without a cusp or a curvature beyond its bounds; each keeps "
+                    << "the best curve found (cell array ShapeViolations). Knots and spans count the "
+                    << "line's distinct points (approximations: the vertices of the reference "
+                    << "polygon) from 0." << lineText.str());
   }
   // The families' shape parameters (the same names on every line of a family;
   // lines too short for the family's curve have none).

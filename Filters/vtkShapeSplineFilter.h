@@ -206,6 +206,10 @@ protected:
   /// interpolate: lines it cannot approximate are reported.
   virtual bool Approximates() const { return false; }
 
+  /// Whether the family's automatic shape mode is on: violations it leaves
+  /// (it could not remove them within its bounds) are reported.
+  virtual bool AdjustsShape() const { return false; }
+
   /// An approximating family's NumberOfKnots for the math core: 0 is
   /// shapesplines::CrossValidatedKnots, 1 counts as 2.
   static int ApproximationKnotCount(int numberOfKnots);

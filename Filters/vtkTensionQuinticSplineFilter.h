@@ -128,6 +128,7 @@ protected:
   vtkTensionQuinticSplineFilter();
   ~vtkTensionQuinticSplineFilter() override;
   bool Approximates() const override { return this->Mode == APPROXIMATE; }
+  bool AdjustsShape() const override { return this->Automatic; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

@@ -147,6 +147,7 @@ protected:
   vtkVariableDegreeSplineFilter();
   ~vtkVariableDegreeSplineFilter() override;
   bool Approximates() const override { return this->Mode != INTERPOLATE; }
+  bool AdjustsShape() const override { return this->AutomaticDegrees; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

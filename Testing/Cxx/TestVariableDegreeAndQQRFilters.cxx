@@ -1,9 +1,11 @@
 // vtkVariableDegreeSplineFilter and vtkQQRSplineFilter through VTK pipelines:
-// their options, their arrays and their warnings; and the knots of both
-// approximating families (with vtkTensionQuinticSplineFilter).
+// their options, their arrays and their warnings; the knots of both
+// approximating families (with vtkTensionQuinticSplineFilter); and the warning
+// of every automatic shape mode.
 #include "FilterTestUtilities.h"
 
 #include "vtkDoubleArray.h"
+#include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkQQRSplineFilter.h"
 #include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
@@ -317,6 +319,32 @@ TEST(QQRSplineFilter, InterpolatesAndWritesItsExponents)
     CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0));
   EXPECT_LE(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0),
     CellArray(run.Output, "ShapeViolations")->GetTuple1(0));
+}
+
+TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
+{
+  // The noisy aorta centerline: the qqr exponents cannot remove every
+  // violation within the automatic mode's bounds, the generalized cubic's
+  // tension can. The warning names each line and a failing criterion.
+  const auto data = ReadData("aorta-centerline.vtp");
+  const FilterRun automatic = RunFilter<QQR>(data);
+  vtkDataArray* left = CellArray(automatic.Output, "ShapeViolations");
+  ASSERT_EQ(left->GetNumberOfTuples(), 2);
+  ASSERT_GT(left->GetTuple1(0), 0.0);
+  ASSERT_GT(left->GetTuple1(1), 0.0);
+  EXPECT_EQ(CountMessages(automatic.Warnings, { "2 line(s) keep shape violations", "cell 0", "cell 1",
+              "torsion sign on span at spans" }),
+    1)
+    << Joined(automatic.Warnings);
+  const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
+  EXPECT_GT(CellArray(fixed.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CountMessages(fixed.Warnings, { "keep shape violations" }), 0) << Joined(fixed.Warnings);
+  vtkNew<vtkGeneralizedCubicSplineFilter> tensioned;
+  tensioned->SetInputData(data);
+  const FilterRun preserved = UpdateChecked(data, tensioned, { tensioned });
+  EXPECT_EQ(CellArray(preserved.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CountMessages(preserved.Warnings, { "keep shape violations" }), 0)
+    << Joined(preserved.Warnings);
 }
 
 TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
