@@ -15,7 +15,8 @@
  *
  * With AutomaticTension on (default) the tension starts at Tension and is
  * raised, span by span, only where the shape audit (paper 001, Definition 1)
- * fails, until no criterion fails or MaxTension is reached: collinear data
+ * fails, until no criterion fails or MaxTension is reached (within the
+ * bounds of every automatic mode, see vtkShapeSplineFilter): collinear data
  * stay straight, convex data convex, planar data planar, without flattening
  * the rest of the curve. Off, every span gets Tension.
  *

@@ -29,9 +29,19 @@
  * from its points; 0 for an interpolation), and the input cell arrays.
  * Interpolated lines whose points look noisy (a least squares keeps far
  * fewer knots than points) get one warning per run: their curvature and
- * torsion follow the noise, and Mode Approximate gives the curve's own. An approximating family audits its curve against the polygon
- * whose shape it keeps rather than against the data. With VMTKArrayNames on, the frame is also written as
- * FrenetTangent, FrenetNormal and FrenetBinormal.
+ * torsion follow the noise, and Mode Approximate gives the curve's own. An
+ * approximating family audits its curve against the polygon whose shape it
+ * keeps rather than against the data. With VMTKArrayNames on, the frame is
+ * also written as FrenetTangent, FrenetNormal and FrenetBinormal.
+ *
+ * The shape-preserving families' automatic modes (their default) raise the
+ * shape parameter only on failing spans and never beyond bounds that keep
+ * the curve regular: the curvature within 1e3 times the data's largest
+ * discrete curvature (1e4 with straight runs), the speed above 1e-3 of each
+ * span's chord over its parameter length, no span farther than half a
+ * segment from its data. The best curve met is kept; lines left with
+ * violations are named, with the criterion and where, in one warning per
+ * run.
  *
  * Lines with one distinct point are passed through unchanged (zero frame) and
  * lines with two distinct points become straight segments, each with a

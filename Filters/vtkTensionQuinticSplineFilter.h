@@ -16,7 +16,9 @@
  * In Automatic mode (default) every knot starts at gamma = lambda = 1 and
  * the parameters of the two knots of every span that breaks the shape of the
  * data (paper 001, Definition 1: collinearity, convexity, coplanarity,
- * torsion sign) are halved until no span breaks it or they reach 1e-6.
+ * torsion sign) are halved until no span breaks it or they reach 1/256,
+ * within the bounds every automatic mode keeps (no cusp, no runaway
+ * curvature; see vtkShapeSplineFilter); what is left is reported.
  * Otherwise Gamma and Lambda are used at every knot (C4 uses min(Gamma, 1)).
  * The point arrays Gamma (and Lambda for C3) and the cell arrays MinGamma
  * (and MinLambda) report the parameters used, per span the smaller of its
@@ -24,11 +26,14 @@
  *
  * Mode APPROXIMATE (lines with at least six points, open or closed; shorter
  * ones are interpolated with a warning) fits the spline with NumberOfKnots
- * knots (0: chosen by cross-validation), uniform in the
- * parameterization, in least squares (paper 000, section 5); its shape
- * reference is L*, the least-squares polygon on the same knots, and the
- * automatic mode keeps the sign of L*'s discrete torsion on every span.
- * ShapeViolations then counts every Definition 1 criterion against L*.
+ * knots (0, the default: chosen per line by cross-validation), uniform in
+ * the parameters, which CorrectParameters moves to where each point sits on
+ * the curve, in least squares (paper 000, section 5); its shape reference is
+ * L*, the least-squares polygon on the same knots, whose shape the automatic
+ * mode keeps where it stands out of the noise, changing the curvature by at
+ * most 2x. ShapeViolations then counts every Definition 1 criterion against
+ * L*; the cell arrays NumberOfKnots and NoiseLevel report the knots and the
+ * points' RMS distance from the curve.
  * Everything else (sampling, arrays, bad input) is described in
  * vtkShapeSplineFilter.
  *

@@ -13,15 +13,19 @@
  * polygon. Systems are banded (periodic for closed lines): O(n).
  *
  * Mode INTERPOLATE (default) passes through every point. With
- * AutomaticDegrees on (default) the degrees start at Degree and are raised
+ * AutomaticDegrees on (default) the degrees start at Degree and are doubled
  * only at the knots of spans where the shape audit (paper 001, Definition 1)
- * fails, until none fails or MaxDegree is reached. The APPROXIMATE modes
+ * fails, until none fails or MaxDegree is reached, within the bounds of
+ * every automatic mode (see vtkShapeSplineFilter). The APPROXIMATE modes
  * (lines with at least four points, six when closed; shorter ones are
- * interpolated with a warning) fit NumberOfKnots knots (0: chosen by
- * cross-validation) uniform in the parameter in least squares and keep
- * the shape of psi, the best piecewise linear least-squares fit: GLOBAL
- * raises every degree together, LOCAL raises degrees and pulls the curve
- * towards psi (weighted least squares) only at failing spans.
+ * interpolated with a warning) fit NumberOfKnots knots (0, the default:
+ * chosen per line by cross-validation) uniform in the parameters, which
+ * CorrectParameters moves to where each point sits on the curve, in least
+ * squares, and keep the shape of psi, the best piecewise linear
+ * least-squares fit, where it stands out of the noise (changing the
+ * curvature by at most 2x): GLOBAL raises every degree together, LOCAL
+ * raises degrees and pulls the curve towards psi (weighted least squares)
+ * only at failing spans.
  *
  * Output: the contract of vtkShapeSplineFilter, plus the point array Degree
  * (the larger degree of each sample's span) and the cell array MaxDegree.

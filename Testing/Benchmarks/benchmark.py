@@ -1,8 +1,12 @@
 """Speed and accuracy of the ShapeSplines families against vtkSplineFilter, SciPy and
 finite differences, on the same input.
 
-Run (prints tables of output points per second and ratios, all measured in this run,
-cost growth, memory and accuracy, and writes plots into build/benchmark/):
+Run (prints tables of output points per second and ratios, all measured in this run;
+the automatic shape modes' cost against the fixed ones on noisy helices; every
+family's shape figures on users' kind of data (noisy helices and trefoils, random
+3D polylines, staircases, the aorta); the approximations of noisy, unevenly spaced
+points against SciPy's smoothing spline, vtkSplineFilter and finite differences;
+cost growth, memory and accuracy; and writes plots into build/benchmark/):
     bash Testing/Scripts/benchmark.sh
 
 Every contender produces the same number of output points per line (10 per span, the
@@ -23,16 +27,24 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersGeneral import vtkSplineFilter
 
 SUBDIVISIONS = 10
+# Each family's proxy and the property that switches its automatic shape mode
+# (on by default) off.
+FAMILIES = (("cubic", "CubicSpline", None), ("gencubic", "GeneralizedCubicSpline", "AutomaticTension"),
+            ("quintic", "TensionQuinticSpline", "Automatic"), ("vdps", "VariableDegreeSpline", "AutomaticDegrees"),
+            ("qqr", "QQRSpline", "Automatic"))
+HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def helix_lines(lines, points_per_line, points_per_turn=8.0, seed=1):
-    """Helices of random radius and pitch, as an array (lines, points, 3)."""
+def helix_lines(lines, points_per_line, points_per_turn=8.0, seed=1, noise=0.0):
+    """Helices of random radius and pitch, as an array (lines, points, 3), with
+    Gaussian noise of 'noise' times each helix's radius."""
     rng = np.random.default_rng(seed)
     t = 2 * np.pi * np.arange(points_per_line) / points_per_turn
     radius = rng.uniform(1, 3, size=(lines, 1))
     pitch = rng.uniform(0.2, 1, size=(lines, 1))
     phase = rng.uniform(0, 2 * np.pi, size=(lines, 1))
-    return np.stack([radius * np.cos(t + phase), radius * np.sin(t + phase), pitch * t], axis=-1)
+    xyz = np.stack([radius * np.cos(t + phase), radius * np.sin(t + phase), pitch * t], axis=-1)
+    return xyz + rng.normal(0.0, 1.0, xyz.shape) * noise * radius[:, :, None]
 
 
 def to_polydata(xyz):
@@ -229,6 +241,222 @@ def accuracy(turns=6, seed=2):
     return errors
 
 
+FILTERS = {}
+
+
+def fitted(family, poly, backend="STDThread", **properties):
+    """The filter's output and the seconds it took (one filter per family and
+    properties, made once: a ParaView proxy costs more than a short line's fit)."""
+    vtkSMPTools.SetBackend(backend)
+    key = (family, tuple(sorted(properties.items())))
+    if key not in FILTERS:
+        FILTERS[key] = getattr(simple, family)(Input=simple.Line(), **properties).GetClientSideObject()
+    algorithm = FILTERS[key]
+    algorithm.SetInputDataObject(0, poly)
+    algorithm.Modified()
+    start = time.perf_counter()
+    algorithm.Update()
+    return algorithm.GetOutputDataObject(0), time.perf_counter() - start
+
+
+def cell_array(output, name):
+    return vtk_to_numpy(output.GetCellData().GetArray(name))
+
+
+def line_curvatures(output):
+    """The largest curvature of each output line."""
+    curvature = vtk_to_numpy(output.GetPointData().GetArray("Curvature"))
+    offsets = vtk_to_numpy(output.GetLines().GetOffsetsArray())
+    connectivity = vtk_to_numpy(output.GetLines().GetConnectivityArray())
+    return np.array([curvature[connectivity[a:b]].max() for a, b in zip(offsets[:-1], offsets[1:])])
+
+
+def discrete_curvature(xyz):
+    """The largest Menger curvature of a polyline's consecutive triples (repeated points skipped)."""
+    xyz = xyz[np.concatenate([[True], np.linalg.norm(np.diff(xyz, axis=0), axis=1) > 0])]
+    a, b, c = xyz[:-2], xyz[1:-1], xyz[2:]
+    cross = np.linalg.norm(np.cross(b - a, c - b), axis=1)
+    sides = np.linalg.norm(b - a, axis=1) * np.linalg.norm(c - b, axis=1) * np.linalg.norm(c - a, axis=1)
+    return (2 * cross / sides).max()
+
+
+def automatic_cost(lines=4000, timed_lines=1000):
+    """Each family's default (automatic) mode against its fixed mode on the same
+    noisy helices (0.1% of the radius, 16 points per turn), where the automatic
+    mode has work to do, and the slowest single line in the automatic mode."""
+    xyz = helix_lines(lines, 50, points_per_turn=16.0, noise=0.001, seed=5)
+    poly = to_polydata(xyz)
+    print("\nAutomatic shape mode against the fixed one, %d lines x 50 points of helices (16 per turn) with "
+          "0.1%% noise, "
+          "2 threads:" % lines)
+    print("%-9s %11s %11s %9s %22s %16s" % ("family", "fixed s", "auto s", "cost", "violations fixed/auto",
+                                            "slowest line ms"))
+    for family, proxy, automatic in FAMILIES[1:]:
+        seconds = {}
+        for mode, properties in (("fixed", {automatic: 0}), ("auto", {})):
+            seconds[mode] = min(fitted(proxy, poly, **properties)[1] for _ in range(3))
+            seconds[mode + " violations"] = int(cell_array(fitted(proxy, poly, **properties)[0],
+                                                           "ShapeViolations").sum())
+        slowest = max(min(fitted(proxy, to_polydata(xyz[i:i + 1]), "Sequential")[1] for _ in range(2))
+                      for i in range(timed_lines))
+        print("%-9s %11.3f %11.3f %8.2fx %22s %16.1f" % (
+            family, seconds["fixed"], seconds["auto"], seconds["auto"] / seconds["fixed"],
+            "%d / %d" % (seconds["fixed violations"], seconds["auto violations"]), 1e3 * slowest))
+    print("(cost: automatic seconds / fixed seconds; the slowest line: each of the first %d lines alone, one "
+          "thread, filter overhead included)" % timed_lines)
+
+
+def users_data(rng):
+    """Data that looks like users': noisy helices and trefoils, random 3D
+    polylines, 3D staircases of straight runs (name, points, straight runs?)."""
+    cases = []
+    for count in (25, 50, 100, 200):
+        for noise in (0.001, 0.005, 0.01):
+            t = 2 * np.pi * np.arange(count) / 16
+            xyz = np.column_stack([np.cos(t), np.sin(t), 0.25 * t])
+            cases.append(("helix", xyz + rng.normal(0, noise, xyz.shape), False))
+    for count in (40, 100):
+        for noise in (0.001, 0.005, 0.01):
+            t = 2 * np.pi * np.arange(count) / count
+            xyz = np.column_stack([np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t), -np.sin(3 * t)])
+            cases.append(("trefoil", xyz + rng.normal(0, 3 * noise, xyz.shape), False))
+    for _ in range(6):
+        steps = rng.normal(size=(59, 3))
+        steps *= rng.uniform(0.5, 1.5, (59, 1)) / np.linalg.norm(steps, axis=1)[:, None]
+        cases.append(("random walk", np.vstack([np.zeros(3), np.cumsum(steps, axis=0)]), False))
+    for _ in range(6):
+        points, previous = [np.zeros(3)], -1
+        for _ in range(6):
+            axis = rng.choice([k for k in range(3) if k != previous])
+            previous = axis
+            step = np.zeros(3)
+            step[axis] = rng.choice([-1, 1]) * rng.uniform(1, 3) / 4
+            points += [points[-1] + step * (k + 1) for k in range(4)]
+        cases.append(("staircase", np.array(points), True))
+    return cases
+
+
+def read_aorta():
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(os.path.join(HERE, "..", "..", "Data", "aorta-centerline.vtp"))
+    reader.Update()
+    return reader.GetOutput()
+
+
+def aorta_lines(aorta):
+    points = vtk_to_numpy(aorta.GetPoints().GetData())
+    offsets = vtk_to_numpy(aorta.GetLines().GetOffsetsArray())
+    connectivity = vtk_to_numpy(aorta.GetLines().GetConnectivityArray())
+    return [points[connectivity[a:b]] for a, b in zip(offsets[:-1], offsets[1:])]
+
+
+def shape_on_users_data(seed=7):
+    """Every family's default mode against its fixed mode on users' kind of data:
+    ShapeViolations summed per kind, the largest curvature against the data's
+    largest discrete curvature (the automatic modes' bound: 1e3, 1e4 with
+    straight runs), and the cost."""
+    cases = users_data(np.random.default_rng(seed))
+    aorta = read_aorta()
+    aorta_curvature = [discrete_curvature(line) for line in aorta_lines(aorta)]
+    print("\nShape on users' data, every family's default (automatic) mode against its fixed mode "
+          "(%d generated lines, and the aorta in Data/):" % len(cases))
+    print("%-9s %-12s %7s %22s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
+                                            "curvature / data's", "cost"))
+    for family, proxy, automatic in FAMILIES[1:]:
+        for kind in ("helix", "trefoil", "random walk", "staircase"):
+            chosen = [c for c in cases if c[0] == kind]
+            totals, ratio = {"fixed": [0, 0.0], "auto": [0, 0.0]}, 0.0
+            for _, xyz, _ in chosen:
+                poly = to_polydata(xyz[None])
+                for mode, properties in (("fixed", {automatic: 0}), ("auto", {})):
+                    output, seconds = fitted(proxy, poly, "Sequential", **properties)
+                    totals[mode][0] += int(cell_array(output, "ShapeViolations").sum())
+                    totals[mode][1] += seconds
+                    if mode == "auto":
+                        ratio = max(ratio, line_curvatures(output).max() / discrete_curvature(xyz))
+            print("%-9s %-12s %7d %22s %20.3g %7.1fx" % (
+                family, kind, len(chosen), "%d / %d" % (totals["fixed"][0], totals["auto"][0]), ratio,
+                totals["auto"][1] / totals["fixed"][1]))
+        fixed, _ = fitted(proxy, aorta, "Sequential", **{automatic: 0})
+        auto, _ = fitted(proxy, aorta, "Sequential")
+        print("%-9s %-12s %7d %22s %20s" % (
+            family, "aorta", 2, "%s / %s" % ("+".join("%d" % v for v in cell_array(fixed, "ShapeViolations")),
+                                             "+".join("%d" % v for v in cell_array(auto, "ShapeViolations"))),
+            "/".join("%.3g" % (k / d) for k, d in zip(line_curvatures(auto), aorta_curvature))))
+    print("(curvature / data's: the largest over the kind's lines of the automatic curve's largest curvature "
+          "over the data's largest discrete curvature)")
+
+
+def noisy_unevenly_spaced():
+    """Noisy points at random parameters on helices, trefoils, Viviani's curves
+    and growing spirals (Testing/Python/noisy_curves.py, the cases of
+    python.NoisyApproximation): both approximations at their defaults against
+    SciPy's smoothing spline (told the noise, and at its default s), the cubic
+    interpolant, vtkSplineFilter + finite differences and finite differences of
+    the points; then the approximations of the aorta."""
+    import sys
+    sys.path.insert(0, os.path.join(HERE, "..", "Python"))
+    from noisy_curves import CURVES, Truth, errors, splprep_route
+
+    def ours_route(family, points, **properties):
+        output, _ = fitted(family, to_polydata(points[None]), NumberOfSubdivisions=20, **properties)
+        data = output.GetPointData()
+        return (vtk_to_numpy(output.GetPoints().GetData()), vtk_to_numpy(data.GetArray("Curvature")),
+                vtk_to_numpy(data.GetArray("Torsion")), vtk_to_numpy(data.GetArray("ArcLength")))
+
+    def vtk_route(points):
+        spline = vtkSplineFilter()
+        spline.SetInputData(to_polydata(points[None]))
+        spline.SetSubdivideToSpecified()
+        spline.SetNumberOfSubdivisions((len(points) - 1) * SUBDIVISIONS)
+        spline.Update()
+        dense = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
+        return (dense, *finite_difference_geometry(dense))
+
+    routes = (("quintic approximation", lambda p, s: ours_route("TensionQuinticSpline", p, Mode="Approximate")),
+              ("vdps approximation", lambda p, s: ours_route("VariableDegreeSpline", p, Mode="Approximate Local")),
+              ("SciPy splprep, s = 3 n sigma^2", lambda p, s: splprep_route(p, 3 * len(p) * s ** 2)),
+              ("SciPy splprep, default s", lambda p, s: splprep_route(p, len(p) - np.sqrt(2 * len(p)))),
+              ("cubic (interpolates)", lambda p, s: ours_route("CubicSpline", p)),
+              ("vtkSplineFilter + FD", lambda p, s: vtk_route(p)),
+              ("FD of the points", lambda p, s: (p, *finite_difference_geometry(p))))
+    figures = {name: [] for name, _ in routes}
+    for curve in CURVES:
+        truth = Truth(curve)
+        for count in (60, 150, 400):
+            for noise in (0.001, 0.002, 0.005):
+                for seed in (1, 2):
+                    rng = np.random.default_rng([count, int(noise * 1e4), seed, len(curve)])
+                    points, sigma = truth.sample(count, noise, rng)
+                    for name, route in routes:
+                        figures[name].append(np.abs(errors(truth, *route(points, sigma))))
+    cases = len(figures[routes[0][0]])
+    print("\nNoisy, unevenly spaced points (%d cases: helix, trefoil, Viviani, growing spiral; 60-400 points at "
+          "random parameters; noise 0.1-0.5%% of the diagonal): relative errors over the middle half" % cases)
+    print("%-32s %14s %14s %14s %14s %10s %12s" % ("method", "median curv.", "median tors.", "worst curv.",
+                                                   "worst tors.", "worst len.", "within 10/30/1%"))
+    for name, _ in routes:
+        f = np.array(figures[name])
+        within = np.sum((f[:, 0] <= 0.1) & (f[:, 1] <= 0.3) & (f[:, 2] <= 0.01))
+        print("%-32s %13.3g%% %13.3g%% %13.3g%% %13.3g%% %9.3g%% %12s" % (
+            name, 100 * np.median(f[:, 0]), 100 * np.median(f[:, 1]), 100 * f[:, 0].max(), 100 * f[:, 1].max(),
+            100 * f[:, 2].max(), "%d of %d" % (within, cases)))
+    aorta = read_aorta()
+    cubic, _ = fitted("CubicSpline", aorta)
+    print("Aorta (Data/), approximations at their defaults: length / the cubic's, largest curvature, "
+          "knots, noise level (data units), ShapeViolations per line")
+    for name, family, mode in (("quintic approximation", "TensionQuinticSpline", "Approximate"),
+                               ("vdps approximation", "VariableDegreeSpline", "Approximate Local")):
+        output, _ = fitted(family, aorta, Mode=mode)
+        print("%-32s %s, %s, %s, %s, %s" % (
+            name, "/".join("%.4f" % v for v in cell_array(output, "Length") / cell_array(cubic, "Length")),
+            "/".join("%.3g" % v for v in line_curvatures(output)),
+            "/".join("%d" % v for v in cell_array(output, "NumberOfKnots")),
+            "/".join("%.3g" % v for v in cell_array(output, "NoiseLevel")),
+            "/".join("%d" % v for v in cell_array(output, "ShapeViolations"))))
+
+
 def peak_resident_kib():
     """This process's peak resident memory (VmHWM) in KiB."""
     with open("/proc/self/status") as status:
@@ -349,7 +577,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__)
     parser.add_argument("--plugin", required=True)
     parser.add_argument("--lines", type=int, default=10000)
-    parser.add_argument("--accuracy-only", action="store_true", help="skip the speed part")
+    parser.add_argument("--accuracy-only", action="store_true", help="only the accuracy table and plot")
+    parser.add_argument("--shape-only", action="store_true",
+                        help="only the automatic modes' cost and shape on users' data, and the noisy points' table")
     parser.add_argument("--output", default="build/benchmark", help="folder for the plots")
     args = parser.parse_args()
     args.plugin = os.path.abspath(args.plugin)  # the growth runs load it from another folder
@@ -357,44 +587,39 @@ def main():
     if args.accuracy_only:
         plot_accuracy(accuracy(), args.output)
         return
+    if args.shape_only:
+        automatic_cost()
+        shape_on_users_data()
+        noisy_unevenly_spaced()
+        return
 
     cases = [("%d lines x 50 points" % args.lines, helix_lines(args.lines, 50), 3)]
     for n in (1000, 4000, 16000):
         cases.append(("1 line x %d points" % n, helix_lines(1, n), 7))
-    families = (("cubic", "CubicSpline", None), ("gencubic", "GeneralizedCubicSpline", "AutomaticTension"),
-                ("quintic", "TensionQuinticSpline", "Automatic"), ("vdps", "VariableDegreeSpline", "AutomaticDegrees"),
-                ("qqr", "QQRSpline", "Automatic"))
-    print("Output points per second (2 threads unless said), and ratios measured in this run:")
-    print("%-24s %-9s %11s %11s %9s %9s %9s" % ("case", "family", "fixed", "automatic", "x vtk", "x SciPy",
-                                                "auto cost"))
+    print("Output points per second (2 threads unless said), fixed shape parameters, and ratios measured "
+          "in this run:")
+    print("%-24s %-9s %11s %9s %9s" % ("case", "family", "rate", "x vtk", "x SciPy"))
     for name, xyz, repeats in cases:
         poly = to_polydata(xyz)
         per_line = (xyz.shape[1] - 1) * SUBDIVISIONS + 1
         rates = {}
         runs = [("seq", ours(poly, "Sequential")), ("vtk", vtk_spline(poly, per_line)), ("scipy", scipy_route(xyz))]
-        for family, proxy, automatic in families:
-            if automatic is None:
-                runs.append((family, ours(poly, "STDThread", proxy)))
-            else:
-                runs.append((family, ours(poly, "STDThread", proxy, **{automatic: 0})))
-                # The qqr search fails on every span of a helix and audits
-                # thousands of candidates per line: measured on 200 lines.
-                subset = to_polydata(xyz[:200]) if family == "qqr" else poly
-                runs.append((family + " auto", ours(subset, "STDThread", proxy)))
+        for family, proxy, automatic in FAMILIES:
+            runs.append((family, ours(poly, "STDThread", proxy, **({automatic: 0} if automatic else {}))))
         for label, run in runs:
             seconds, points = best_time(run, repeats)
-            assert points == per_line * (min(200, xyz.shape[0]) if label == "qqr auto" else xyz.shape[0]), \
-                (label, points)
+            assert points == per_line * xyz.shape[0], (label, points)
             rates[label] = points / seconds
-        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "vtkSpline", rates["vtk"], "", "", "", ""))
-        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "SciPy", rates["scipy"], "", "", "", ""))
-        print("%-24s %-9s %11.3g %11s %9s %9s %9s" % (name, "cubic 1th", rates["seq"], "", "", "", ""))
-        for family, _, automatic in families:
-            auto = rates.get(family + " auto")
-            print("%-24s %-9s %11.3g %11s %8.2fx %8.2fx %9s" % (
-                name, family, rates[family], "%.3g" % auto if auto else "-", rates[family] / rates["vtk"],
-                rates[family] / rates["scipy"], "%.2fx" % (rates[family] / auto) if auto else "-"))
-    print("(x vtk, x SciPy: the fixed mode's rate over theirs; auto cost: fixed rate / automatic rate, on helices)")
+        print("%-24s %-9s %11.3g" % (name, "vtkSpline", rates["vtk"]))
+        print("%-24s %-9s %11.3g" % (name, "SciPy", rates["scipy"]))
+        print("%-24s %-9s %11.3g" % (name, "cubic 1th", rates["seq"]))
+        for family, _, _ in FAMILIES:
+            print("%-24s %-9s %11.3g %8.2fx %8.2fx" % (name, family, rates[family], rates[family] / rates["vtk"],
+                                                       rates[family] / rates["scipy"]))
+    print("(x vtk, x SciPy: our rate over theirs)")
+    automatic_cost()
+    shape_on_users_data()
+    noisy_unevenly_spaced()
     threads_identical(to_polydata(helix_lines(2000, 50)))
     sizes, per_point = growth(args.plugin)
     plot_growth(sizes, per_point, args.output)
