@@ -1,5 +1,8 @@
 #include "vtkCurvatureCombFilter.h"
 
+#include "LineCells.h"
+
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -30,15 +33,13 @@ struct CombLine
   bool Closed = false;
 };
 
-std::vector<CombLine> ToothSamples(vtkCellArray* lines, int stride)
+std::vector<CombLine> ToothSamples(const std::vector<shapesplines::LineCell>& cells, int stride)
 {
   std::vector<CombLine> result;
-  auto it = vtk::TakeSmartPointer(lines->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  for (const auto& cell : cells)
   {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
+    const vtkIdType* ids = cell.PointIds.data();
+    const auto n = static_cast<vtkIdType>(cell.PointIds.size());
     CombLine line;
     // Closed curves repeat their first point at the end of the cell.
     line.Closed = n > 2 && ids[0] == ids[n - 1];
@@ -70,6 +71,11 @@ int vtkCurvatureCombFilter::RequestData(
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
+  if (std::isnan(this->ScaleFactor) || std::isnan(this->RelativeToothLength))
+  {
+    vtkErrorMacro("ScaleFactor and RelativeToothLength must not be NaN: no comb made.");
+    return 1;
+  }
   if (input->GetNumberOfLines() == 0)
   {
     vtkWarningMacro("Input has no lines: the comb is empty.");
@@ -89,7 +95,15 @@ int vtkCurvatureCombFilter::RequestData(
     return 1;
   }
 
-  const std::vector<CombLine> lines = ToothSamples(input->GetLines(), this->Stride);
+  const auto inputLines = shapesplines::lineCells(input);
+  for (const auto& cell : inputLines)
+  {
+    if (!cell.Error.empty())
+    {
+      vtkErrorMacro("Line (cell " << cell.CellId << ") skipped: " << cell.Error << ".");
+    }
+  }
+  const std::vector<CombLine> lines = ToothSamples(inputLines, this->Stride);
   double largest = 0.0;
   for (const CombLine& line : lines)
   {

@@ -110,6 +110,10 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  std::vector<std::pair<const char*, double>> GetNumericSettings() const override
+  {
+    return { { "Tension", this->Tension }, { "MaxTension", this->MaxTension } };
+  }
   const char* GetPointValuesArrayName() override;
   bool AdjustsShape() const override { return this->AutomaticTension; }
 

@@ -1,5 +1,6 @@
 #include "vtkPolylineShapeAnalysis.h"
 
+#include "LineCells.h"
 #include "ShapeAnalysis.h"
 
 #include "vtkCellArray.h"
@@ -16,7 +17,9 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -26,20 +29,6 @@ vtkStandardNewMacro(vtkPolylineShapeAnalysis);
 namespace
 {
 using shapesplines::Vec3;
-
-std::vector<std::vector<vtkIdType>> LinesOf(vtkPolyData* polyData)
-{
-  std::vector<std::vector<vtkIdType>> lines;
-  auto it = vtk::TakeSmartPointer(polyData->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    it->GetCurrentCell(npts, ids);
-    lines.emplace_back(ids, ids + npts);
-  }
-  return lines;
-}
 
 template <typename Array>
 vtkSmartPointer<Array> NewZeroArray(const char* name, int components, vtkIdType tuples)
@@ -59,7 +48,17 @@ Vec3 TupleOf(vtkDataArray* array, vtkIdType id)
   return v;
 }
 
-/// The curve's samples of one line, for the audit; empty if arrays are missing.
+constexpr std::array<const char*, 5> CurveArrays = { "SpanIndex", "Tangent", "Binormal", "Curvature",
+  "Torsion" };
+
+/// Whether curve has the point arrays the audit reads.
+bool HasCurveArrays(vtkPolyData* curve)
+{
+  return std::all_of(CurveArrays.begin(), CurveArrays.end(),
+    [&](const char* name) { return curve->GetPointData()->GetArray(name) != nullptr; });
+}
+
+/// The curve's samples of one line, for the audit (see HasCurveArrays).
 std::vector<shapesplines::AuditSample> CurveSamples(
   vtkPolyData* curve, const std::vector<vtkIdType>& ids, bool& closed)
 {
@@ -70,10 +69,6 @@ std::vector<shapesplines::AuditSample> CurveSamples(
   vtkDataArray* curvature = pd->GetArray("Curvature");
   vtkDataArray* torsion = pd->GetArray("Torsion");
   std::vector<shapesplines::AuditSample> samples;
-  if (!span || !tangent || !binormal || !curvature || !torsion)
-  {
-    return samples;
-  }
   closed = ids.size() > 1 && ids.front() == ids.back();
   const size_t count = closed ? ids.size() - 1 : ids.size();
   for (size_t k = 0; k < count; ++k)
@@ -119,6 +114,11 @@ int vtkPolylineShapeAnalysis::RequestData(
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
+  if (std::isnan(this->DataShapeTolerance) || std::isnan(this->CurveShapeTolerance))
+  {
+    vtkErrorMacro("DataShapeTolerance and CurveShapeTolerance must not be NaN: nothing analysed.");
+    return 1;
+  }
   output->ShallowCopy(input);
   const vtkIdType nPoints = input->GetNumberOfPoints();
   auto curvature = NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, nPoints);
@@ -132,14 +132,21 @@ int vtkPolylineShapeAnalysis::RequestData(
     vtkWarningMacro("Input has no lines: nothing to analyse.");
   }
 
-  const auto lines = LinesOf(input);
-  const auto curves = curve ? LinesOf(curve) : std::vector<std::vector<vtkIdType>>{};
+  const auto lines = shapesplines::lineCells(input);
+  const auto curves = curve ? shapesplines::lineCells(curve) : std::vector<shapesplines::LineCell>{};
   if (curve && curves.size() != lines.size())
   {
     vtkWarningMacro("The curve input has " << curves.size() << " lines for " << lines.size()
                                            << " data lines: lines past the shorter are not audited.");
   }
   const bool audit = curve != nullptr;
+  const bool curveReadable = audit && HasCurveArrays(curve);
+  if (audit && !curveReadable)
+  {
+    vtkErrorMacro("The curve input lacks SpanIndex, Tangent, Binormal, Curvature or Torsion: it "
+                  "must be the output of a Shape Splines curve filter. Nothing audited "
+                  "(ShapeViolations -1).");
+  }
   auto mask = NewZeroArray<vtkIntArray>("ViolationMask", 1, nPoints);
   auto total = NewZeroArray<vtkIntArray>("ShapeViolations", 1, 0);
   auto preserving = NewZeroArray<vtkUnsignedCharArray>("ShapePreserving", 1, 0);
@@ -158,7 +165,8 @@ int vtkPolylineShapeAnalysis::RequestData(
   tolerances.Curve = this->CurveShapeTolerance;
   for (size_t l = 0; l < lines.size(); ++l)
   {
-    const auto& ids = lines[l];
+    const auto& ids = lines[l].PointIds;
+    const vtkIdType cellId = lines[l].CellId;
     std::vector<Vec3> points(ids.size());
     bool finite = true;
     for (size_t i = 0; i < ids.size(); ++i)
@@ -166,8 +174,12 @@ int vtkPolylineShapeAnalysis::RequestData(
       input->GetPoint(ids[i], points[i].data());
       finite = finite && points[i].allFinite();
     }
-    const vtkIdType cellId = input->GetNumberOfVerts() + static_cast<vtkIdType>(l);
-    if (!finite)
+    if (!lines[l].Error.empty())
+    {
+      vtkErrorMacro("Line (cell " << cellId << ") skipped: " << lines[l].Error << ".");
+      finite = false;
+    }
+    else if (!finite)
     {
       vtkErrorMacro("Line (cell " << cellId << ") skipped: a point is not finite.");
     }
@@ -200,15 +212,16 @@ int vtkPolylineShapeAnalysis::RequestData(
     }
     shapesplines::ShapeAudit result;
     bool audited = false;
-    if (finite && l < curves.size() && data.numberOfSpans() > 0)
+    if (l < curves.size() && !curves[l].Error.empty())
+    {
+      vtkErrorMacro("Curve line (cell " << curves[l].CellId << ") not audited: " << curves[l].Error
+                                        << ".");
+    }
+    else if (finite && curveReadable && l < curves.size() && data.numberOfSpans() > 0 &&
+      !curves[l].PointIds.empty())
     {
       bool curveClosed = false;
-      const auto samples = CurveSamples(curve, curves[l], curveClosed);
-      if (samples.empty())
-      {
-        vtkErrorMacro("The curve input lacks SpanIndex, Tangent, Binormal, Curvature or Torsion.");
-        return 0;
-      }
+      const auto samples = CurveSamples(curve, curves[l].PointIds, curveClosed);
       if (samples.back().Span + 1 != data.numberOfSpans() || curveClosed != data.Closed)
       {
         vtkWarningMacro("Line (cell " << cellId << "): the curve has " << samples.back().Span + 1

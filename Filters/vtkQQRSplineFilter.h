@@ -118,13 +118,14 @@ public:
   /**
    * PAPER (default): the local parameters given before the paper's Figure 5
    * (the classical cubic B-spline at alpha = beta = 4); CUSTOM: X, Y, Z at
-   * every knot. The interpolation takes x and y from (3.18) and uses Z only.
+   * every knot, each in [0, 1] (NaN is refused when the filter runs). The
+   * interpolation takes x and y from (3.18) and uses Z only.
    */
   vtkSetClampMacro(LocalParameters, int, PAPER, CUSTOM);
   vtkGetMacro(LocalParameters, int);
-  vtkSetMacro(X, double);
+  vtkSetClampMacro(X, double, 0.0, 1.0);
   vtkGetMacro(X, double);
-  vtkSetMacro(Y, double);
+  vtkSetClampMacro(Y, double, 0.0, 1.0);
   vtkGetMacro(Y, double);
   vtkSetClampMacro(Z, double, 0.0, 1.0);
   vtkGetMacro(Z, double);
@@ -162,6 +163,10 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  std::vector<std::pair<const char*, double>> GetNumericSettings() const override
+  {
+    return { { "Alpha", this->Alpha }, { "Beta", this->Beta }, { "MaxAlpha", this->MaxAlpha }, { "X", this->X }, { "Y", this->Y }, { "Z", this->Z } };
+  }
   const char* GetPointValuesArrayName() override;
   bool AdjustsShape() const override { return this->Automatic; }
 

@@ -1,6 +1,7 @@
 #include "vtkShapeSplineFilter.h"
 
 #include "FitPolyline.h"
+#include "LineCells.h"
 #include "SparseSolve.h"
 
 #include "vtkCellArray.h"
@@ -20,9 +21,11 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <exception>
 #include <initializer_list>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -54,18 +57,14 @@ vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkId
 
 std::vector<LineWork> GatherLines(vtkPolyData* input)
 {
-  std::vector<LineWork> lines(input->GetNumberOfLines());
-  // Cell ids count vertices first, then lines.
-  const vtkIdType firstLineId = input->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-  vtkIdType k = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++k)
+  std::vector<LineWork> lines;
+  for (auto& cell : shapesplines::lineCells(input))
   {
-    vtkIdType npts;
-    const vtkIdType* ids;
-    it->GetCurrentCell(npts, ids);
-    lines[k].CellId = firstLineId + k;
-    lines[k].PointIds.assign(ids, ids + npts);
+    LineWork line;
+    line.CellId = cell.CellId;
+    line.PointIds = std::move(cell.PointIds);
+    line.Error = std::move(cell.Error);
+    lines.push_back(std::move(line));
   }
   return lines;
 }
@@ -277,6 +276,39 @@ int vtkShapeSplineFilter::RequestData(
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
+  auto settings = this->GetNumericSettings();
+  settings.insert(settings.end(), { { "DataShapeTolerance", this->DataShapeTolerance },
+                                    { "CurveShapeTolerance", this->CurveShapeTolerance } });
+  for (const auto& [name, value] : settings)
+  {
+    if (std::isnan(value))
+    {
+      vtkErrorMacro(<< name << " is NaN: nothing fitted.");
+      return 1;
+    }
+  }
+  if (this->SamplingMode == ARC_LENGTH &&
+    !(this->SampleLength > 0.0 && this->SampleLength <= VTK_DOUBLE_MAX))
+  {
+    vtkErrorMacro("SampleLength must be positive and finite, not " << this->SampleLength
+                                                                  << ": nothing sampled.");
+    return 1;
+  }
+  try
+  {
+    return this->FitLines(input, output);
+  }
+  catch (const std::bad_alloc&)
+  {
+    output->Initialize();
+    vtkErrorMacro("Out of memory: the output is empty. Fewer samples (NumberOfSubdivisions, "
+                  "SampleLength) or fewer lines per run need less.");
+    return 1;
+  }
+}
+
+int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
+{
   if (input->GetNumberOfPoints() == 0 || input->GetNumberOfLines() == 0)
   {
     vtkWarningMacro("Input has no lines: the output is empty.");
@@ -329,6 +361,10 @@ int vtkShapeSplineFilter::RequestData(
     for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
     {
       LineWork& line = lines[k];
+      if (!line.Error.empty())
+      {
+        continue; // a damaged cell, reported below
+      }
       std::vector<Vec3> points(line.PointIds.size());
       for (size_t i = 0; i < points.size(); ++i)
       {
@@ -406,6 +442,17 @@ int vtkShapeSplineFilter::RequestData(
     {
       violatingLines.push_back(k);
     }
+    if (fit.Spline && fit.Audit.StrayingSpans > 0)
+    {
+      vtkWarningMacro("Line (cell " << line.CellId << "): the curve strays "
+                                    << fit.Audit.PolygonDeviation << " local segment lengths from "
+                                    << (fit.interpolates() ? "its data" : "its reference polygon")
+                                    << " (span " << fit.Audit.DeviationSpan << ", "
+                                    << fit.Audit.StrayingSpans
+                                    << " span(s) beyond 0.5): not shape-preserving. Very uneven "
+                                    << "spacing does this; try Centripetal parameterization or "
+                                    << "the generalized cubic.");
+    }
     if (fit.Plan.LengthIncreased)
     {
       vtkWarningMacro("Line (cell " << line.CellId
@@ -454,6 +501,18 @@ int vtkShapeSplineFilter::RequestData(
   }
   const vtkIdType outputSize = firstSample.back();
   const auto lineCount = static_cast<vtkIdType>(kept.size());
+  if (outputSize > MaximumRunSamples)
+  {
+    vtkErrorMacro("The output would hold " << outputSize << " samples, more than the "
+                  << MaximumRunSamples << " a run may make (about 400 bytes each while it is "
+                  << "made): "
+                  << (this->SamplingMode == ARC_LENGTH
+                         ? "raise SampleLength (now " + std::to_string(this->SampleLength) + ")"
+                         : "lower NumberOfSubdivisions (now " +
+                           std::to_string(this->NumberOfSubdivisions) + ")")
+                  << ", or split the input. The output is empty.");
+    return 1;
+  }
 
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
@@ -602,6 +661,7 @@ int vtkShapeSplineFilter::RequestData(
   knotCount->SetName("NumberOfKnots");
   knotCount->SetNumberOfTuples(lineCount);
   auto noiseLevel = NewArray("NoiseLevel", 1, lineCount);
+  auto deviation = NewArray("PolygonDeviation", 1, lineCount);
   auto tortuosity = NewArray("Tortuosity", 1, lineCount);
   auto condition = NewArray("ConditionEstimate", 1, lineCount);
   for (vtkIdType c = 0; c < lineCount; ++c)
@@ -618,6 +678,7 @@ int vtkShapeSplineFilter::RequestData(
     condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
     knotCount->SetValue(c, fit.Spline ? static_cast<int>(fit.Spline->knots().size()) : 0);
     noiseLevel->SetValue(c, fit.NoiseLevel);
+    deviation->SetValue(c, fit.Spline ? fit.Audit.PolygonDeviation : 0.0);
     const auto lineParameters =
       fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
     for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
@@ -654,7 +715,7 @@ int vtkShapeSplineFilter::RequestData(
   }
   for (vtkAbstractArray* a :
     std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition,
-      knotCount, noiseLevel })
+      knotCount, noiseLevel, deviation })
   {
     outCD->AddArray(a);
   }

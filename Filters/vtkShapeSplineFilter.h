@@ -26,7 +26,12 @@
  * names the lines where it is too large to trust, above 4.5e11), the
  * summary of each shape parameter (Max<Name> or Min<Name>), NumberOfKnots
  * (of the curve), NoiseLevel (an approximation's root-mean-square distance
- * from its points; 0 for an interpolation), and the input cell arrays.
+ * from its points; 0 for an interpolation), PolygonDeviation (the largest
+ * distance of the curve from its segment of the data, or of the
+ * approximation's reference polygon, over the longest of that segment and its
+ * neighbours: beyond 0.5 the line is not ShapePreserving, its straying spans
+ * count among its ShapeViolations, and a warning names it), and the input
+ * cell arrays.
  * Interpolated lines whose points look noisy (a least squares keeps far
  * fewer knots than points) get one warning per run: their curvature and
  * torsion follow the noise, and Mode Approximate gives the curve's own. An
@@ -56,6 +61,9 @@
 
 #include "ShapeSplinesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 #ifndef __VTK_WRAP__
 namespace shapesplines
@@ -132,9 +140,11 @@ public:
   /**
    * Target distance along the curve between samples in ARC_LENGTH mode
    * (default 1, in the units of the input). A line never gets more than
-   * 1e7 samples: the spacing grows, with a warning, if it would.
+   * 1e7 samples: the spacing grows, with a warning, if it would. Zero,
+   * negative or NaN lengths are refused with an error (nothing sampled), and
+   * so is a run of more than MaximumRunSamples samples.
    */
-  vtkSetClampMacro(SampleLength, double, 1e-300, VTK_DOUBLE_MAX);
+  vtkSetClampMacro(SampleLength, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(SampleLength, double);
   ///@}
 
@@ -190,6 +200,10 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  /// The most samples one run writes (all lines together): beyond, an error
+  /// and an empty output rather than memory the machine may not have.
+  static constexpr vtkIdType MaximumRunSamples = 20000000;
+
 #ifndef __VTK_WRAP__
   /**
    * The family's curve for one line's cleaned data (at least three distinct
@@ -216,6 +230,10 @@ protected:
   /// interpolate: lines it cannot approximate are reported.
   virtual bool Approximates() const { return false; }
 
+  /// The family's numeric settings by name, checked for NaN (which would pass
+  /// the clamping setters) before a run.
+  virtual std::vector<std::pair<const char*, double>> GetNumericSettings() const { return {}; }
+
   /// Whether the family's automatic shape mode is on: violations it leaves
   /// (it could not remove them within its bounds) are reported.
   virtual bool AdjustsShape() const { return false; }
@@ -235,6 +253,9 @@ protected:
   bool VMTKArrayNames = false;
 
 private:
+  /// RequestData's work once its input is checked; std::bad_alloc escapes.
+  int FitLines(vtkPolyData* input, vtkPolyData* output);
+
   vtkShapeSplineFilter(const vtkShapeSplineFilter&) = delete;
   void operator=(const vtkShapeSplineFilter&) = delete;
 };

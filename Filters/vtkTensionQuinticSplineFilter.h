@@ -140,6 +140,10 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  std::vector<std::pair<const char*, double>> GetNumericSettings() const override
+  {
+    return { { "Gamma", this->Gamma }, { "Lambda", this->Lambda } };
+  }
 
   int Continuity = C4;
   int Mode = INTERPOLATE;

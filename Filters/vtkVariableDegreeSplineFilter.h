@@ -158,6 +158,10 @@ protected:
 #ifndef __VTK_WRAP__
   shapesplines::BuiltCurve BuildCurve(const shapesplines::FitContext& context) const override;
 #endif
+  std::vector<std::pair<const char*, double>> GetNumericSettings() const override
+  {
+    return { { "Degree", this->Degree }, { "MaxDegree", this->MaxDegree }, { "Lambda", this->Lambda } };
+  }
   const char* GetPointValuesArrayName() override;
 
   int Mode = INTERPOLATE;

@@ -835,7 +835,16 @@ int Audit(Arguments& args)
   analysis->SetInputData(0, Read(args.Positional[0]));
   if (args.Positional.size() == 2)
   {
-    analysis->SetInputData(1, Read(args.Positional[1]));
+    vtkSmartPointer<vtkPolyData> curve = Read(args.Positional[1]);
+    for (const char* name : { "SpanIndex", "Tangent", "Binormal", "Curvature", "Torsion" })
+    {
+      if (!curve->GetPointData()->GetArray(name))
+      {
+        throw std::runtime_error(args.Positional[1] + " has no point array " + name +
+          ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
+      }
+    }
+    analysis->SetInputData(1, curve);
   }
   MessageCounter messages({ analysis });
   analysis->Update();
@@ -853,6 +862,11 @@ int Audit(Arguments& args)
       vtkIdType n;
       const vtkIdType* ids;
       it->GetCurrentCell(n, ids);
+      if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= result->GetNumberOfPoints(); }))
+      {
+        std::cout << "line " << line << ": skipped (a point id out of range)\n";
+        continue;
+      }
       double maxCurvature = 0.0;
       double minTorsion = 0.0;
       double maxTorsion = 0.0;

@@ -372,6 +372,22 @@ struct CorrectedFit
   double Residual = std::numeric_limits<double>::infinity();
 };
 
+/// Whether every span of the extended knots holds at least two points: a
+/// span with one is decided by that point and its neighbours, and the
+/// corrected parameters of a wandering line (a random walk) can gather so
+/// that a dozen such spans in a row loop far from the points.
+bool everySpanHoldsTwoPoints(const ExtendedData& data)
+{
+  std::vector<int> held(data.Knots.size() - 1, 0);
+  for (const double u : data.Parameters)
+  {
+    const auto after = std::upper_bound(data.Knots.begin(), data.Knots.end(), u);
+    const auto span = std::clamp<long>(after - data.Knots.begin() - 1, 0, static_cast<long>(held.size()) - 1);
+    ++held[span];
+  }
+  return std::all_of(held.begin(), held.end(), [](int n) { return n >= 2; });
+}
+
 CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u, int knots,
   bool closed, bool correct)
 {
@@ -390,10 +406,16 @@ CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u
     // The first point and an open line's last keep their parameters (the
     // curve's ends), and the points their order.
     const size_t last = closed ? points.size() : points.size() - 1;
+    std::vector<double> corrected = u;
     for (size_t j = 1; j < last; ++j)
     {
-      u[j] = std::clamp(fit->nearest(points[j], u[j]), u[j - 1], u[last]);
+      corrected[j] = std::clamp(fit->nearest(points[j], u[j]), corrected[j - 1], u[last]);
     }
+    if (!everySpanHoldsTwoPoints(extendForApproximation(points, corrected, knots, closed)))
+    {
+      break; // keep the last parameters that held every span
+    }
+    u = std::move(corrected);
   }
   const auto fit = fitTo(u);
   if (!fit)

@@ -30,7 +30,7 @@ struct ShapeBounds
   double CurvatureFactor = 1e3;
   double StraightRunCurvatureFactor = 1e4;
   double SpeedFraction = 1e-3;
-  double Deviation = 0.5;
+  double Deviation = MaximumPolygonDeviation;
   /// Approximations (0: none): the curvature at every sample stays within
   /// this factor of the level-0 curve's, wherever that stands above what the
   /// reference's noise can bend (NoiseSignificance times the curvature of an

@@ -139,6 +139,29 @@ void CurveAuditor::audit(const Curve& curve, int j)
   this->Deviation[j] = deviation / this->LocalLength[j];
 }
 
+ShapeAudit CurveAuditor::result() const
+{
+  ShapeAudit audit = this->Auditor.result();
+  // A straying span fails outside Definition 1's criteria: the bit after them.
+  constexpr unsigned StrayBit = 1u << static_cast<int>(ShapeCriterion::Count);
+  for (size_t j = 0; j < this->Deviation.size(); ++j)
+  {
+    const double deviation = this->Deviation[j];
+    if (deviation > audit.PolygonDeviation || audit.DeviationSpan < 0)
+    {
+      audit.PolygonDeviation = deviation;
+      audit.DeviationSpan = static_cast<int>(j);
+    }
+    if (deviation > MaximumPolygonDeviation)
+    {
+      ++audit.StrayingSpans;
+      audit.SpanMask[j] |= StrayBit;
+      audit.SpanDeficiency[j] += deviation - MaximumPolygonDeviation;
+    }
+  }
+  return audit;
+}
+
 double CurveAuditor::distanceToSegment(const Vec3& p, int j) const
 {
   const Vec3& a = this->Reference.Points[j];

@@ -147,7 +147,8 @@ public:
   /// (Re-)audits span j of curve, forgetting what the span's samples found before.
   void audit(const Curve& curve, int span);
   void auditAll(const Curve& curve, const ProgressCallback& progress = {});
-  ShapeAudit result() const { return this->Auditor.result(); }
+  /// The audit, straying spans (beyond MaximumPolygonDeviation) included.
+  ShapeAudit result() const;
 
   /// Largest curvature on span j's samples (the curve's units).
   double largestCurvature(int span) const { return this->Curvature[span]; }

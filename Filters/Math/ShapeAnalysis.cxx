@@ -123,7 +123,7 @@ void markKnots(std::vector<AuditSample>& samples, bool closed)
 
 int ShapeAudit::violations() const
 {
-  int total = 0;
+  int total = this->StrayingSpans;
   for (const int count : this->Failures)
   {
     total += count;

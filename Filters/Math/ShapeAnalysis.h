@@ -53,6 +53,10 @@ struct DiscreteShape
 DiscreteShape discreteShape(
   const CleanPolyline& data, const ShapeTolerances& tolerances = {}, double vertexNoise = 0.0);
 
+/// How far a curve may stray from its reference polygon: a fraction of the
+/// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).
+constexpr double MaximumPolygonDeviation = 0.5;
+
 /// How many times the change noise can cause a turn or twist must exceed to count.
 constexpr double NoiseSignificance = 3.0;
 
@@ -103,7 +107,16 @@ struct ShapeAudit
   std::array<int, static_cast<int>(ShapeCriterion::Count)> Failures{};
   /// Every distinct failure, ordered by criterion, then knot or span.
   std::vector<ShapeFailure> Where;
+  /// The largest distance of the curve from its segment of the reference
+  /// polygon, over the longest of that segment and its neighbours, and the
+  /// span where it is (-1: not measured); spans beyond
+  /// MaximumPolygonDeviation count as violations (a curve through the points,
+  /// or near its polygon, has no business away from them).
+  double PolygonDeviation = 0.0;
+  int DeviationSpan = -1;
+  int StrayingSpans = 0;
 
+  /// Failures of Definition 1 and straying spans.
   int violations() const;
   bool preserving() const { return this->violations() == 0; }
 };

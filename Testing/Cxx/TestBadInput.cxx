@@ -312,6 +312,30 @@ std::vector<BadInput> Table()
         ExpectGoodLinesProcessed(o.Run.Output, 2);
         ExpectMessage(o.Run.Errors, { "cell 1", "not finite" });
       } },
+    { "PointIdOutOfRange",
+      [] {
+        // A damaged file: cell 1 refers to points the data do not have.
+        auto data = Between(GoodLine());
+        vtkNew<vtkCellArray> lines;
+        vtkIdType id = 0;
+        for (vtkIdType cell = 0; cell < 3; ++cell)
+        {
+          std::vector<vtkIdType> ids(12);
+          for (vtkIdType& k : ids)
+          {
+            k = id++;
+          }
+          ids[5] = cell == 1 ? 1000 : ids[5];
+          ids[6] = cell == 1 ? -7 : ids[6];
+          lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+        }
+        data->SetLines(lines);
+        return data;
+      },
+      [](const Outcome& o) {
+        ExpectGoodLinesProcessed(o.Run.Output, 2);
+        ExpectMessage(o.Run.Errors, { "cell 1", "point id 1000 out of range", "36 points" });
+      } },
     { "InfCoordinate",
       [] {
         Polyline line = GoodLine();

@@ -7,6 +7,10 @@
 #include "vtkCubicSplineFilter.h"
 #include "vtkCurvatureCombFilter.h"
 #include "vtkPolylineShapeAnalysis.h"
+#include "vtkVariableDegreeSplineFilter.h"
+#include "vtkTensionQuinticSplineFilter.h"
+#include "vtkQQRSplineFilter.h"
+#include "vtkGeneralizedCubicSplineFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -849,8 +853,8 @@ TEST(Properties, ClampMacrosClamp)
   EXPECT_EQ(f->GetParameterization(), vtkShapeSplineFilter::UNIFORM);
   f->SetSamplingMode(5);
   EXPECT_EQ(f->GetSamplingMode(), vtkShapeSplineFilter::ARC_LENGTH);
-  f->SetSampleLength(-1.0);
-  EXPECT_GT(f->GetSampleLength(), 0.0);
+  f->SetSampleLength(-1.0); // refused when the filter runs (Settings tests)
+  EXPECT_EQ(f->GetSampleLength(), 0.0);
   f->SetDataShapeTolerance(2.0);
   EXPECT_EQ(f->GetDataShapeTolerance(), 1.0);
   f->SetCurveShapeTolerance(-0.5);
@@ -1215,4 +1219,226 @@ TEST(ShapeSplineFilter, IllConditionedSystemIsReportedAndWarned)
   EXPECT_EQ(condition->GetTuple1(0), 2.0);
   EXPECT_EQ(condition->GetTuple1(1), 1e13);
   ExpectAllFinite(run.Output);
+}
+
+// ===========================================================================
+// Settings and damaged cells beyond the bad-input table.
+
+namespace
+{
+/// A copy of data whose line `cell` refers to point id 1000000.
+vtkSmartPointer<vtkPolyData> WithDamagedLine(vtkPolyData* data, vtkIdType cell)
+{
+  auto damaged = DeepCopy(data);
+  vtkNew<vtkCellArray> lines;
+  const auto ids = LinesOf(data);
+  for (size_t l = 0; l < ids.size(); ++l)
+  {
+    IdList line = ids[l];
+    line[line.size() / 2] = static_cast<vtkIdType>(l) == cell ? 1000000 : line[line.size() / 2];
+    lines->InsertNextCell(static_cast<vtkIdType>(line.size()), line.data());
+  }
+  damaged->SetLines(lines);
+  return damaged;
+}
+
+/// count points of a helix of radius r and pitch parameter b, dt apart.
+Polyline Helix(double r, double b, double dt, int count)
+{
+  Polyline points;
+  for (int i = 0; i < count; ++i)
+  {
+    const double t = dt * i;
+    points.push_back({ r * std::cos(t), r * std::sin(t), b * t });
+  }
+  return points;
+}
+
+vtkSmartPointer<vtkPolyData> TwoHelices()
+{
+  return PolylinesData({ Helix(1.0, 0.3, 0.5, 20), Helix(2.0, 0.2, 0.4, 30) });
+}
+} // namespace
+
+TEST(Settings, SampleLengthNotPositiveOrNaNIsAnErrorAndNothingIsSampled)
+{
+  for (const double length : { 0.0, -1.0, NaN })
+  {
+    const FilterRun run = RunCubic(TwoHelices(), [length](vtkCubicSplineFilter* f) {
+      f->SetSamplingModeToArcLength();
+      f->SetSampleLength(length);
+    });
+    EXPECT_EQ(CountMessages(run.Errors, { "SampleLength must be positive and finite" }), 1)
+      << length << ": " << Joined(run.Errors);
+    EXPECT_EQ(run.Output->GetNumberOfPoints(), 0) << length;
+  }
+}
+
+TEST(Settings, ARunBeyondTheSampleBudgetIsAnErrorNotAnAbort)
+{
+  // 1000 points at 100000 samples per span: 1e8 samples, about 40 GB.
+  const FilterRun subdivided = RunCubic(PolylinesData({ Helix(1.0, 0.3, 0.05, 1000) }),
+    [](vtkCubicSplineFilter* f) { f->SetNumberOfSubdivisions(100000); });
+  EXPECT_EQ(CountMessages(subdivided.Errors, { "99900001 samples", "lower NumberOfSubdivisions (now 100000)" }),
+    1)
+    << Joined(subdivided.Errors);
+  EXPECT_EQ(subdivided.Output->GetNumberOfPoints(), 0);
+  // 40 short lines, each within its own 1e7 cap at a tiny spacing, 4e8 together.
+  std::vector<Polyline> lines(40, Helix(1.0, 0.3, 0.5, 8));
+  const FilterRun spaced = RunCubic(PolylinesData(lines), [](vtkCubicSplineFilter* f) {
+    f->SetSamplingModeToArcLength();
+    f->SetSampleLength(1e-300);
+  });
+  EXPECT_EQ(CountMessages(spaced.Errors, { "more than the 20000000 a run may make", "raise SampleLength" }), 1)
+    << Joined(spaced.Errors);
+  EXPECT_EQ(spaced.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(Settings, NaNSettingsAreRefusedRatherThanSwitchingTheAuditOff)
+{
+  const auto data = TwoHelices();
+  const FilterRun tolerance =
+    RunCubic(data, [](vtkCubicSplineFilter* f) { f->SetCurveShapeTolerance(NaN); });
+  EXPECT_EQ(CountMessages(tolerance.Errors, { "CurveShapeTolerance is NaN" }), 1) << Joined(tolerance.Errors);
+  EXPECT_EQ(tolerance.Output->GetNumberOfPoints(), 0);
+  vtkNew<vtkGeneralizedCubicSplineFilter> tensioned;
+  tensioned->SetTension(NaN);
+  tensioned->SetInputData(data);
+  const FilterRun tension = UpdateChecked(data, tensioned, { tensioned });
+  EXPECT_EQ(CountMessages(tension.Errors, { "Tension is NaN" }), 1) << Joined(tension.Errors);
+  vtkNew<vtkQQRSplineFilter> qqr;
+  qqr->SetX(1e300); // clamped: x beyond 1 made points at 2e300
+  EXPECT_EQ(qqr->GetX(), 1.0);
+  qqr->SetY(-3.0);
+  EXPECT_EQ(qqr->GetY(), 0.0);
+  qqr->SetZ(NaN);
+  qqr->SetInputData(data);
+  const FilterRun bias = UpdateChecked(data, qqr, { qqr });
+  EXPECT_EQ(CountMessages(bias.Errors, { "Z is NaN" }), 1) << Joined(bias.Errors);
+
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  analysis->SetDataShapeTolerance(NaN);
+  analysis->SetInputData(data);
+  const FilterRun analysed = UpdateChecked(data, analysis, { analysis });
+  EXPECT_EQ(CountMessages(analysed.Errors, { "must not be NaN" }), 1) << Joined(analysed.Errors);
+  const FilterRun curve = RunCubic(data);
+  const FilterRun comb = RunComb(curve.Output, [](vtkCurvatureCombFilter* c) { c->SetScaleFactor(NaN); });
+  EXPECT_EQ(CountMessages(comb.Errors, { "must not be NaN" }), 1) << Joined(comb.Errors);
+}
+
+TEST(DamagedCells, AnalysisAndCombSkipLinesWithPointIdsOutOfRange)
+{
+  const auto data = TwoHelices();
+  const FilterRun curve = RunCubic(data);
+  // A damaged curve: its line 1 is not audited, line 0 is.
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  analysis->SetInputData(data);
+  const auto damagedCurve = WithDamagedLine(curve.Output, 1);
+  analysis->SetInputData(1, damagedCurve);
+  const FilterRun audited = UpdateChecked(data, analysis, { analysis });
+  EXPECT_EQ(CountMessages(audited.Errors, { "Curve line (cell 1) not audited", "point id 1000000" }), 1)
+    << Joined(audited.Errors);
+  EXPECT_GE(CellArray(audited.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CellArray(audited.Output, "ShapeViolations")->GetTuple1(1), -1.0);
+  // Damaged data: that line skipped, the other analysed.
+  const auto damagedData = WithDamagedLine(data, 0);
+  vtkNew<vtkPolylineShapeAnalysis> shape;
+  shape->SetInputData(damagedData);
+  const FilterRun analysed = UpdateChecked(damagedData, shape, { shape });
+  EXPECT_EQ(CountMessages(analysed.Errors, { "Line (cell 0) skipped", "out of range" }), 1)
+    << Joined(analysed.Errors);
+  EXPECT_GT(MaxAbs(PointArray(analysed.Output, "DiscreteCurvature"), LinesOf(data)[1]), 0.0);
+  // A data file given as the curve: no curve arrays, nothing audited, no crash.
+  vtkNew<vtkPolylineShapeAnalysis> mistaken;
+  mistaken->SetInputData(data);
+  mistaken->SetInputData(1, data);
+  const FilterRun refused = UpdateChecked(data, mistaken, { mistaken });
+  EXPECT_EQ(CountMessages(refused.Errors, { "lacks SpanIndex", "Nothing audited" }), 1) << Joined(refused.Errors);
+  EXPECT_EQ(CellArray(refused.Output, "ShapeViolations")->GetTuple1(0), -1.0);
+  // The comb: teeth on line 0 only.
+  const FilterRun comb = RunComb(damagedCurve, [](vtkCurvatureCombFilter*) {});
+  EXPECT_EQ(CountMessages(comb.Errors, { "Line (cell 1) skipped", "out of range" }), 1) << Joined(comb.Errors);
+  EXPECT_GT(comb.Output->GetNumberOfPoints(), 0);
+}
+
+/// Distance from p to the segment ab.
+double DistanceToSegment(const Point& p, const Point& a, const Point& b)
+{
+  const Point ab = b - a;
+  const double squared = Dot(ab, ab);
+  const double along = squared > 0.0 ? std::clamp(Dot(p - a, ab) / squared, 0.0, 1.0) : 0.0;
+  return Norm(p - (a + along * ab));
+}
+
+TEST(PolygonDeviation, ACurveThatLeavesItsDataIsNeverShapePreserving)
+{
+  // Seven points spanning 50 units, two of them 5e-4 apart: the classical
+  // quintic through them strayed up to 33 segment lengths (length 39 times
+  // the polyline's) with no flag. Measured here on the output samples,
+  // independently of the filter's own audit.
+  std::vector<std::function<vtkSmartPointer<vtkShapeSplineFilter>()>> families = {
+    [] { return vtkSmartPointer<vtkShapeSplineFilter>(vtkSmartPointer<vtkCubicSplineFilter>::New()); },
+    [] { return vtkSmartPointer<vtkShapeSplineFilter>(vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New()); },
+    [] { return vtkSmartPointer<vtkShapeSplineFilter>(vtkSmartPointer<vtkTensionQuinticSplineFilter>::New()); },
+    [] {
+      auto fixed = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+      fixed->AutomaticOff();
+      return vtkSmartPointer<vtkShapeSplineFilter>(fixed);
+    },
+    [] { return vtkSmartPointer<vtkShapeSplineFilter>(vtkSmartPointer<vtkVariableDegreeSplineFilter>::New()); },
+    [] { return vtkSmartPointer<vtkShapeSplineFilter>(vtkSmartPointer<vtkQQRSplineFilter>::New()); } };
+  Random random(11);
+  int strayed = 0, flagged = 0;
+  for (int trial = 0; trial < 40; ++trial)
+  {
+    std::vector<double> x(7);
+    for (double& v : x)
+    {
+      v = random.Uniform(0.0, 50.0);
+    }
+    std::sort(x.begin(), x.end());
+    x.front() = 0.0;
+    x.back() = 50.0;
+    const int gap = 1 + trial % 4;
+    x[gap + 1] = x[gap] + 5e-4;
+    Polyline points;
+    for (const double v : x)
+    {
+      points.push_back({ v, random.Uniform(-5.0, 5.0), random.Uniform(-2.0, 2.0) });
+    }
+    const auto data = PolylinesData({ points });
+    for (const auto& make : families)
+    {
+      auto filter = make();
+      filter->SetInputData(data);
+      const FilterRun run = UpdateChecked(data, filter, { filter });
+      // The largest distance of a sample from its span's data segment, over
+      // the longest of that segment and its neighbours.
+      vtkDataArray* span = PointArray(run.Output, "SpanIndex");
+      double measured = 0.0;
+      for (vtkIdType k = 0; k < run.Output->GetNumberOfPoints(); ++k)
+      {
+        const int j = static_cast<int>(span->GetTuple1(k));
+        const Point p = PointOf(run.Output, k);
+        double local = 0.0;
+        for (int n = std::max(j - 1, 0); n <= std::min(j + 1, 5); ++n)
+        {
+          local = std::max(local, Norm(points[n + 1] - points[n]));
+        }
+        measured = std::max(measured, DistanceToSegment(p, points[j], points[j + 1]) / local);
+      }
+      const double reported = CellArray(run.Output, "PolygonDeviation")->GetTuple1(0);
+      const bool preserving = CellArray(run.Output, "ShapePreserving")->GetTuple1(0) == 1.0;
+      EXPECT_LE(measured, reported * 1.05 + 1e-9) << filter->GetClassName() << " trial " << trial;
+      if (measured > 0.6)
+      {
+        ++strayed;
+        EXPECT_FALSE(preserving) << filter->GetClassName() << " trial " << trial << ": " << measured;
+        flagged += CountMessages(run.Warnings, { "cell 0", "strays" }) == 1 ? 1 : 0;
+      }
+    }
+  }
+  Measure("curves straying beyond 0.6 local segment lengths", strayed);
+  EXPECT_GT(strayed, 0); // the data provoke it
+  EXPECT_EQ(flagged, strayed);
 }

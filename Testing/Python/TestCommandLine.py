@@ -241,6 +241,26 @@ check(code == 2 and "cell 0" in err and "not finite" in err and len(nan_out["x"]
       "a NaN line is skipped with an error naming the cell (exit 2); the other line is written",
       "exit %d, %r, %d rows" % (code, err.strip(), len(nan_out["x"])))
 
+# A damaged file (a cell refers to a point it does not have): that line is
+# skipped with an error naming it, never a crash; the other line is used.
+with open(temp("damaged.vtk"), "w") as f:
+    f.write("# vtk DataFile Version 3.0\ndamaged ids\nASCII\nDATASET POLYDATA\nPOINTS 10 double\n")
+    for k in range(10):
+        f.write("%g %g %g\n" % (math.cos(0.6 * k), math.sin(0.6 * k), 0.3 * k))
+    f.write("LINES 2 12\n5 0 1 2 3 4\n5 5 6 1000 8 9\n")
+code, out, err = run("fit", temp("damaged.vtk"), "-o", temp("damaged-out.csv"))
+check(code == 2 and "cell 1" in err and "point id 1000 out of range" in err and
+      len(read_csv(temp("damaged-out.csv"))["x"]) == 41,
+      "fit: a cell with a point id out of range is skipped with an error (exit 2), the other line written",
+      "exit %d, %r" % (code, err.strip()))
+code, out, err = run("audit", temp("damaged.vtk"))
+check(code == 2 and "cell 1" in err and "out of range" in err and out.startswith("line 0: 5 points"),
+      "audit: the damaged line is skipped with an error (exit 2), the other summarised",
+      "exit %d, %r, %r" % (code, err.strip(), out.strip()))
+code, out, err = run("audit", os.path.join(args.data, "helix.vtp"), os.path.join(args.data, "helix.vtp"))
+check(code == 1 and "has no point array SpanIndex" in err and "shapesplines fit" in err,
+      "audit: a data file given as CURVE is refused with a message (exit 1)", "exit %d, %r" % (code, err.strip()))
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)

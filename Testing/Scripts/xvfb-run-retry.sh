@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# Runs a command under a fresh Xvfb display (xvfb-run -a). If the X server could
-# not be reached ("bad X server connection": another process took the display
-# number in between), it tries again, up to three times; any other failure is
-# the command's own and is returned at once.
+# Runs a command under a fresh Xvfb display (xvfb-run -a, from a random display
+# number). If the X server could not be reached ("bad X server connection":
+# another process took the display number in between), it tries again, up to
+# three times; any other failure is the command's own and is returned at once.
 set -u
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 for attempt in 1 2 3; do
-  xvfb-run -a -s "-screen 0 1280x1024x24" "$@" 2>&1 | tee "$log"
+  # A random first display number: parallel tests (and a display left
+  # behind by another program) then rarely race for the same one.
+  xvfb-run -a -n $((100 + RANDOM % 800)) -s "-screen 0 1280x1024x24" "$@" 2>&1 | tee "$log"
   status=${PIPESTATUS[0]}
   if [ "$status" -eq 0 ] || ! grep -q "bad X server connection" "$log"; then
     exit "$status"
