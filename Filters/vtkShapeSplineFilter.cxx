@@ -346,7 +346,11 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
   if (valuesName)
   {
     pointValues = input->GetPointData()->GetArray(valuesName);
-    if (!pointValues)
+    if (!pointValues && input->GetPointData()->GetAbstractArray(valuesName))
+    {
+      vtkWarningMacro("The point array '" << valuesName << "' is not numeric: ignored.");
+    }
+    else if (!pointValues)
     {
       vtkWarningMacro("No point array named '" << valuesName << "' in the input: ignored.");
     }

@@ -60,7 +60,9 @@ Eigen::MatrixX3d solveSparse(
   lu.compute(matrix);
   if (lu.info() != Eigen::Success)
   {
-    throw std::runtime_error("singular spline system: " + lu.lastErrorMessage());
+    // Eigen's own words ("structurally singular, zero column") say nothing to a user.
+    throw std::runtime_error("the spline's linear system is singular (too many knots for the "
+                             "points, or points too unevenly spaced)");
   }
   Eigen::MatrixX3d solution = lu.solve(rhs);
   if (lu.info() != Eigen::Success || !solution.allFinite())

@@ -614,7 +614,7 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
       const double value = given[i % given.size()];
       if (std::isfinite(value) && value >= LowestVariableDegree)
       {
-        degrees[i] = value;
+        degrees[i] = std::min(value, HighestVariableDegree);
       }
     }
     return interpolateData(context, capped, degrees);

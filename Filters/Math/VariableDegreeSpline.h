@@ -14,6 +14,9 @@ namespace shapesplines
 {
 /// The smallest degree of the space (k = 5 everywhere is the quintic spline).
 constexpr double LowestVariableDegree = 5.0;
+/// The highest degree a knot takes (the filters' Max Degree and Degree Array
+/// values are capped here: beyond, powers (1 - v)^k underflow on most of a span).
+constexpr double HighestVariableDegree = 1000.0;
 
 /**
  * The pseudo Bernstein basis B_0..B_5 of VP_{k,m} (degree k at the interval's

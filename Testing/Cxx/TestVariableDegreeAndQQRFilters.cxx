@@ -6,7 +6,9 @@
 
 #include "vtkDoubleArray.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
+#include "vtkPointData.h"
 #include "vtkQQRSplineFilter.h"
+#include "vtkStringArray.h"
 #include "vtkTensionQuinticSplineFilter.h"
 #include "vtkVariableDegreeSplineFilter.h"
 
@@ -407,4 +409,30 @@ TEST(QQRSplineFilter, LocalBiasPerPointFromAnInputArray)
   Measure("Akima, z array with one fallback: largest difference to z = 0.5 near point 8", near);
   EXPECT_EQ(far, 0.0);
   EXPECT_GT(near, 1e-6);
+}
+
+TEST(Messages, SettingsTheCurveCannotTakeAreNamedInTheProjectsWords)
+{
+  const auto data = ReadData("helix.vtp");
+  const vtkIdType count = data->GetNumberOfPoints();
+  // A Degree Array of 1e300: capped at degree 1000, not refused as "below 5".
+  vtkNew<vtkDoubleArray> huge;
+  huge->SetName("Huge");
+  huge->SetNumberOfTuples(count);
+  huge->Fill(1e300);
+  data->GetPointData()->AddArray(huge);
+  const FilterRun capped = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
+    f->AutomaticDegreesOff();
+    f->SetDegreeArrayName("Huge");
+  });
+  EXPECT_TRUE(capped.Errors.empty()) << Joined(capped.Errors);
+  EXPECT_EQ(CellArray(capped.Output, "MaxDegree")->GetTuple1(0), 1000.0);
+  // A string array named where numbers are read.
+  vtkNew<vtkStringArray> labels;
+  labels->SetName("Labels");
+  labels->SetNumberOfValues(count);
+  data->GetPointData()->AddArray(labels);
+  const FilterRun named =
+    RunFilter<VariableDegree>(data, [](VariableDegree* f) { f->SetDegreeArrayName("Labels"); });
+  EXPECT_EQ(CountMessages(named.Warnings, { "'Labels' is not numeric" }), 1) << Joined(named.Warnings);
 }
