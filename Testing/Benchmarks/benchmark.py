@@ -137,6 +137,18 @@ def finite_difference_geometry(points):
     return curvature, torsion
 
 
+def vtk_spline_geometry(points):
+    """vtkSplineFilter through one line (10 samples per span), then finite
+    differences of its samples: what users of vtkSplineFilter do today."""
+    spline = vtkSplineFilter()
+    spline.SetInputData(to_polydata(points[None]))
+    spline.SetSubdivideToSpecified()
+    spline.SetNumberOfSubdivisions((len(points) - 1) * SUBDIVISIONS)
+    spline.Update()
+    dense = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
+    return (dense, *finite_difference_geometry(dense))
+
+
 def interior(values, fraction=0.25):
     n = len(values)
     return values[int(n * fraction):int(n * (1 - fraction))]
@@ -219,13 +231,7 @@ def accuracy(turns=6, seed=2):
                                         Automatic=0, Parameterization=UNIFORM),
                         filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=0,
                                         Automatic=0)]
-                spline = vtkSplineFilter()
-                spline.SetInputData(to_polydata(xyz[None]))
-                spline.SetSubdivideToSpecified()
-                spline.SetNumberOfSubdivisions((len(xyz) - 1) * SUBDIVISIONS)
-                spline.Update()
-                dense_vtk = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
-                fits.append((dense_vtk, *finite_difference_geometry(dense_vtk)))
+                fits.append(vtk_spline_geometry(xyz))
                 fits.append((xyz, *finite_difference_geometry(xyz)))
                 row = []
                 for fit in fits:
@@ -397,7 +403,7 @@ def noisy_unevenly_spaced():
     the points; then the approximations of the aorta."""
     import sys
     sys.path.insert(0, os.path.join(HERE, "..", "Python"))
-    from noisy_curves import CURVES, Truth, errors, splprep_route
+    from noisy_curves import cases, errors, splprep_route
 
     def ours_route(family, points, **properties):
         output, _ = fitted(family, to_polydata(points[None]), NumberOfSubdivisions=20, **properties)
@@ -405,35 +411,20 @@ def noisy_unevenly_spaced():
         return (vtk_to_numpy(output.GetPoints().GetData()), vtk_to_numpy(data.GetArray("Curvature")),
                 vtk_to_numpy(data.GetArray("Torsion")), vtk_to_numpy(data.GetArray("ArcLength")))
 
-    def vtk_route(points):
-        spline = vtkSplineFilter()
-        spline.SetInputData(to_polydata(points[None]))
-        spline.SetSubdivideToSpecified()
-        spline.SetNumberOfSubdivisions((len(points) - 1) * SUBDIVISIONS)
-        spline.Update()
-        dense = vtk_to_numpy(spline.GetOutput().GetPoints().GetData())
-        return (dense, *finite_difference_geometry(dense))
-
     routes = (("quintic approximation", lambda p, s: ours_route("TensionQuinticSpline", p, Mode="Approximate")),
               ("vdps approximation", lambda p, s: ours_route("VariableDegreeSpline", p, Mode="Approximate Local")),
               ("SciPy splprep, s = 3 n sigma^2", lambda p, s: splprep_route(p, 3 * len(p) * s ** 2)),
               ("SciPy splprep, default s", lambda p, s: splprep_route(p, len(p) - np.sqrt(2 * len(p)))),
               ("cubic (interpolates)", lambda p, s: ours_route("CubicSpline", p)),
-              ("vtkSplineFilter + FD", lambda p, s: vtk_route(p)),
+              ("vtkSplineFilter + FD", lambda p, s: vtk_spline_geometry(p)),
               ("FD of the points", lambda p, s: (p, *finite_difference_geometry(p))))
     figures = {name: [] for name, _ in routes}
-    for curve in CURVES:
-        truth = Truth(curve)
-        for count in (60, 150, 400):
-            for noise in (0.001, 0.002, 0.005):
-                for seed in (1, 2):
-                    rng = np.random.default_rng([count, int(noise * 1e4), seed, len(curve)])
-                    points, sigma = truth.sample(count, noise, rng)
-                    for name, route in routes:
-                        figures[name].append(np.abs(errors(truth, *route(points, sigma))))
-    cases = len(figures[routes[0][0]])
+    for _, _, _, _, truth, points, sigma in cases():
+        for name, route in routes:
+            figures[name].append(np.abs(errors(truth, *route(points, sigma))))
+    count = len(figures[routes[0][0]])
     print("\nNoisy, unevenly spaced points (%d cases: helix, trefoil, Viviani, growing spiral; 60-400 points at "
-          "random parameters; noise 0.1-0.5%% of the diagonal): relative errors over the middle half" % cases)
+          "random parameters; noise 0.1-0.5%% of the diagonal): relative errors over the middle half" % count)
     print("%-32s %14s %14s %14s %14s %10s %12s" % ("method", "median curv.", "median tors.", "worst curv.",
                                                    "worst tors.", "worst len.", "within 10/30/1%"))
     for name, _ in routes:
@@ -441,7 +432,7 @@ def noisy_unevenly_spaced():
         within = np.sum((f[:, 0] <= 0.1) & (f[:, 1] <= 0.3) & (f[:, 2] <= 0.01))
         print("%-32s %13.3g%% %13.3g%% %13.3g%% %13.3g%% %9.3g%% %12s" % (
             name, 100 * np.median(f[:, 0]), 100 * np.median(f[:, 1]), 100 * f[:, 0].max(), 100 * f[:, 1].max(),
-            100 * f[:, 2].max(), "%d of %d" % (within, cases)))
+            100 * f[:, 2].max(), "%d of %d" % (within, count)))
     aorta = read_aorta()
     cubic, _ = fitted("CubicSpline", aorta)
     print("Aorta (Data/), approximations at their defaults: length / the cubic's, largest curvature, "

@@ -10,7 +10,7 @@ import sys
 
 import numpy as np
 
-from noisy_curves import CURVES, Truth, errors, splprep_route
+from noisy_curves import cases, errors, splprep_route
 from shapesplines.arrays import fit_curves
 
 failures = []
@@ -24,28 +24,22 @@ def check(ok, what, detail=""):
 
 MODES = {"quintic": "approximate", "vdps local": "approximate_local", "vdps global": "approximate_global"}
 ours, theirs, violations = {m: [] for m in MODES}, [], {m: 0 for m in MODES}
-for name in CURVES:
-    truth = Truth(name)
-    for count in (60, 150, 400):
-        for noise in (0.001, 0.002, 0.005):
-            for seed in (1, 2):
-                rng = np.random.default_rng([count, int(noise * 1e4), seed, len(name)])
-                points, sigma = truth.sample(count, noise, rng)
-                scipy_figures = errors(truth, *splprep_route(points, 3 * count * sigma ** 2))
-                theirs.append(scipy_figures)
-                case = "%s, %d points, noise %.1f%%, seed %d" % (name, count, 100 * noise, seed)
-                for mode, value in MODES.items():
-                    curve = fit_curves(points, family=mode.split()[0], samples=20, mode=value)
-                    figures = errors(truth, curve.points, curve.curvature, curve.torsion, curve.arc_length)
-                    ours[mode].append(figures)
-                    violations[mode] += curve.shape_violations
-                    # Every case, no breakdown: curvature within 20% or SciPy's,
-                    # torsion within 100% or SciPy's, length within 1.5% of the curve's.
-                    check(figures[0] <= max(0.2, scipy_figures[0]) and figures[1] <= max(1.0, scipy_figures[1])
-                          and abs(figures[2]) <= 0.015,
-                          "%s, %s" % (mode, case),
-                          "median errors curvature %.3f torsion %.3f, length %+.4f; splprep %.3f, %.3f, %+.4f"
-                          % (figures + scipy_figures))
+for name, count, noise, seed, truth, points, sigma in cases():
+    scipy_figures = errors(truth, *splprep_route(points, 3 * count * sigma ** 2))
+    theirs.append(scipy_figures)
+    case = "%s, %d points, noise %.1f%%, seed %d" % (name, count, 100 * noise, seed)
+    for mode, value in MODES.items():
+        curve = fit_curves(points, family=mode.split()[0], samples=20, mode=value)
+        figures = errors(truth, curve.points, curve.curvature, curve.torsion, curve.arc_length)
+        ours[mode].append(figures)
+        violations[mode] += curve.shape_violations
+        # Every case, no breakdown: curvature within 20% or SciPy's,
+        # torsion within 100% or SciPy's, length within 1.5% of the curve's.
+        check(figures[0] <= max(0.2, scipy_figures[0]) and figures[1] <= max(1.0, scipy_figures[1])
+              and abs(figures[2]) <= 0.015,
+              "%s, %s" % (mode, case),
+              "median errors curvature %.3f torsion %.3f, length %+.4f; splprep %.3f, %.3f, %+.4f"
+              % (figures + scipy_figures))
 
 theirs = np.abs(np.array(theirs))
 for mode in MODES:

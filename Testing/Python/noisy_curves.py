@@ -2,7 +2,7 @@
 and how far a fit's curvature and torsion are from the curve's: shared by the
 noisy-approximation test and the benchmark.
 
-    from noisy_curves import CURVES, Truth, errors
+    from noisy_curves import CURVES, Truth, cases, errors
     truth = Truth("trefoil")
     points, sigma = truth.sample(150, 0.002, np.random.default_rng(1))
     ... fit points ...
@@ -90,6 +90,20 @@ def errors(truth, points, curvature, torsion, arc_length=None):
     return (np.median(np.abs(curvature[middle] - k) / np.abs(k)),
             np.median(np.abs(torsion[middle] - tau) / np.abs(tau)),
             length / truth.sample_length - 1.0)
+
+
+def cases():
+    """The noisy cases: every curve of CURVES, 60, 150 and 400 points, noise
+    0.1%, 0.2% and 0.5% of the diagonal, two seeds; yields (name, count,
+    noise, seed, truth, points, sigma), the same points on every call."""
+    for name in CURVES:
+        truth = Truth(name)
+        for count in (60, 150, 400):
+            for noise in (0.001, 0.002, 0.005):
+                for seed in (1, 2):
+                    rng = np.random.default_rng([count, int(noise * 1e4), seed, len(name)])
+                    points, sigma = truth.sample(count, noise, rng)
+                    yield name, count, noise, seed, truth, points, sigma
 
 
 def splprep_route(points, s, samples=2000):
