@@ -389,7 +389,7 @@ bool everySpanHoldsTwoPoints(const ExtendedData& data)
 }
 
 CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u, int knots,
-  bool closed, bool correct)
+  bool closed, bool correct, const std::function<void()>& checkpoint)
 {
   auto fitTo = [&](const std::vector<double>& parameters) {
     const ExtendedData data = extendForApproximation(points, parameters, knots, closed);
@@ -398,6 +398,7 @@ CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u
   constexpr int Rounds = 3;
   for (int round = 0; correct && round < Rounds; ++round)
   {
+    checkpoint(); // a round on a million points takes seconds
     const auto fit = fitTo(u);
     if (!fit)
     {
@@ -417,6 +418,7 @@ CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u
     }
     u = std::move(corrected);
   }
+  checkpoint();
   const auto fit = fitTo(u);
   if (!fit)
   {
@@ -427,15 +429,23 @@ CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u
 } // namespace
 
 ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::vector<double>& u,
-  int highest, bool closed, int requestedKnots, bool correctParameters)
+  int highest, bool closed, int requestedKnots, bool correctParameters,
+  const ProgressCallback& progress)
 {
   const double count = static_cast<double>(points.size());
   const int lowest = lowestKnotCount(closed);
+  // About the counts scoreCounts tries: every one up to 64, a grid beyond.
+  const double expectedFits = static_cast<double>(candidateCounts(lowest, highest).size()) + 8.0;
   std::map<int, CorrectedFit> fits;
   auto fitted = [&](int knots) -> const CorrectedFit& {
     const auto known = fits.find(knots);
-    return known != fits.end() ? known->second
-                               : (fits[knots] = correctedFit(points, u, knots, closed, correctParameters));
+    if (known != fits.end())
+    {
+      return known->second;
+    }
+    const double fraction = std::min(0.99, static_cast<double>(fits.size()) / expectedFits);
+    return fits[knots] = correctedFit(points, u, knots, closed, correctParameters,
+             [&] { reportProgress(progress, 0, 1, fraction); });
   };
   int chosen = std::clamp(requestedKnots, lowest, std::max(lowest, highest));
   if (requestedKnots == CrossValidatedKnots)

@@ -120,10 +120,13 @@ struct ApproximationPlan
  * one-standard-error rule; a whole standard error let bias into coarse
  * helices, none let noise into the torsion of randomly sampled trefoils). Counts whose fit is singular (a span without points) are not
  * candidates. requestedKnots: a count to use (clamped to [lowest, highest])
- * instead of choosing one; correctParameters false keeps u.
+ * instead of choosing one; correctParameters false keeps u. Progress is
+ * reported after every count fitted (a million points take tens of seconds
+ * in all); FitAborted when it asks to stop.
  */
 ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::vector<double>& u,
-  int highest, bool closed, int requestedKnots, bool correctParameters);
+  int highest, bool closed, int requestedKnots, bool correctParameters,
+  const ProgressCallback& progress = {});
 
 /**
  * Whether points at parameters u look noisy to a least squares: the
@@ -165,15 +168,15 @@ inline bool approximates(int requested, bool closed, int highest)
  */
 template <class Fit>
 auto approximateWithPlan(const std::vector<Vec3>& points, const std::vector<double>& u,
-  int requested, bool closed, int highest, bool correctParameters, const Fit& fit)
-  -> std::optional<decltype(fit(std::declval<const ApproximationPlan&>(), highest))>
+  int requested, bool closed, int highest, bool correctParameters, const ProgressCallback& progress,
+  const Fit& fit) -> std::optional<decltype(fit(std::declval<const ApproximationPlan&>(), highest))>
 {
   if (!approximates(requested, closed, highest))
   {
     return std::nullopt;
   }
   const ApproximationPlan plan =
-    planApproximation(points, u, highest, closed, requested, correctParameters);
+    planApproximation(points, u, highest, closed, requested, correctParameters, progress);
   const int lowest = lowestKnotCount(closed);
   for (int knots = plan.Knots;; knots = std::max(lowest, std::min(knots - 1, knots * 9 / 10)))
   {

@@ -99,7 +99,7 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     const int highest = closed ? count / 2 : std::min(count / 2, count - 4);
     const std::vector<Vec3>& points = context.Data.Points;
     std::optional<BuiltCurve> approximation = approximateWithPlan(points, context.Knots,
-      quintic.ApproximationKnots, closed, highest, quintic.CorrectParameters,
+      quintic.ApproximationKnots, closed, highest, quintic.CorrectParameters, context.Options.Progress,
       [&](const ApproximationPlan& plan, int knots) {
         const double noise = referenceNoise(plan, knots, count);
         QuinticApproximation fitted = approximateKeepingTorsionSigns(

@@ -599,6 +599,7 @@ CurveBuilder variableDegreeBuilder(const VariableDegreeOptions& options)
       const int highest = count / 2;
       std::optional<BuiltCurve> approximation = approximateWithPlan(context.Data.Points,
         context.Knots, options.ApproximationKnots, closed, highest, options.CorrectParameters,
+        context.Options.Progress,
         [&](const ApproximationPlan& plan, int knots) {
           return approximateData(context, capped, plan, knots, start);
         });

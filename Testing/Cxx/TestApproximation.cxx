@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <random>
 
@@ -172,6 +173,37 @@ TEST(Approximation, NoSpanWithoutPoints)
   std::printf("two clusters: %d knots chosen\n", plan.Knots);
   EXPECT_GE(plan.Knots, 2);
   EXPECT_LE(plan.Knots, 3);
+}
+
+TEST(Approximation, ChoosingTheKnotsReportsProgressAndStopsWhenAsked)
+{
+  // Every count fitted reports progress (a million points take tens of
+  // seconds in all); a callback that says stop ends the search at once.
+  std::mt19937 rng(5);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  std::vector<Vec3> points;
+  std::vector<double> u;
+  for (int j = 0; j < 400; ++j)
+  {
+    const double t = 4.0 * j / 399.0;
+    u.push_back(t);
+    points.emplace_back(std::cos(t) + noise(rng), std::sin(t) + noise(rng), 0.2 * t + noise(rng));
+  }
+  std::vector<double> fractions;
+  const ApproximationPlan plan = planApproximation(points, u, 200, false, CrossValidatedKnots, true,
+    [&](double fraction) {
+      fractions.push_back(fraction);
+      return true;
+    });
+  EXPECT_GE(plan.Knots, 2);
+  EXPECT_GE(fractions.size(), 20u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_LT(fractions.back(), 1.0);
+  int calls = 0;
+  EXPECT_THROW(planApproximation(points, u, 200, false, CrossValidatedKnots, true,
+                 [&](double) { return ++calls < 3; }),
+    FitAborted);
+  EXPECT_EQ(calls, 3);
 }
 
 TEST(Approximation, OpenLinesAreExtendedByMirroredPoints)
