@@ -2,9 +2,14 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
 #include "vtkPolyData.h"
 
 #include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <map>
 
 namespace shapesplines
 {
@@ -33,6 +38,38 @@ std::vector<LineCell> lineCells(vtkPolyData* polyData)
       line.PointIds.assign(ids, ids + count);
     }
     lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+bool isLineIdName(const std::string& name)
+{
+  static const std::array<std::string, 8> names = { "line_id", "line", "lineid", "id", "cell",
+    "cell_id", "track", "streamline" };
+  std::string lower(name);
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return std::find(names.begin(), names.end(), lower) != names.end();
+}
+
+std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* lineIds)
+{
+  std::vector<LineCell> lines;
+  std::map<double, size_t> lineOfId;
+  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  {
+    const double id = lineIds ? lineIds->GetComponent(p, 0) : 0.0;
+    if (!std::isfinite(id))
+    {
+      continue;
+    }
+    const auto [where, isNew] = lineOfId.emplace(id, lines.size());
+    if (isNew)
+    {
+      lines.emplace_back();
+      lines.back().CellId = static_cast<vtkIdType>(where->second);
+    }
+    lines[where->second].PointIds.push_back(p);
   }
   return lines;
 }

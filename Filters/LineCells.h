@@ -6,9 +6,12 @@
 
 #include "vtkType.h"
 
+#include <cstddef>
+
 #include <string>
 #include <vector>
 
+class vtkDataArray;
 class vtkPolyData;
 
 namespace shapesplines
@@ -24,6 +27,16 @@ struct LineCell
 /// The line cells of polyData, in order; a cell with an id outside
 /// [0, number of points) has no point ids and an Error saying so.
 std::vector<LineCell> lineCells(vtkPolyData* polyData);
+
+/// Whether a column or point array of this name holds line ids: line_id,
+/// line, lineid, id, cell, cell_id, track or streamline, in any case.
+bool isLineIdName(const std::string& name);
+
+/// Points without line cells (a table's rows, vertices) made into lines in
+/// point order: one line per value of lineIds, in the order of their first
+/// points, or one line of every point when lineIds is null. Points whose id
+/// is NaN or infinite belong to no line. CellId is the line's index.
+std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* lineIds);
 } // namespace shapesplines
 
 #endif

@@ -104,20 +104,32 @@ int vtkCurvatureCombFilter::RequestData(
     }
   }
   const std::vector<CombLine> lines = ToothSamples(inputLines, this->Stride);
-  double largest = 0.0;
+  // The automatic scale follows the 95th percentile tooth, not the longest:
+  // one spike (a near-corner, the noise at an end) would shrink all others.
+  std::vector<double> magnitudes;
   for (const CombLine& line : lines)
   {
     for (const vtkIdType id : line.Teeth)
     {
       const double v = values->GetComponent(id, 0);
-      largest = std::isfinite(v) ? std::max(largest, std::abs(v)) : largest;
+      if (std::isfinite(v))
+      {
+        magnitudes.push_back(std::abs(v));
+      }
     }
+  }
+  double typical = 0.0;
+  if (!magnitudes.empty())
+  {
+    const auto rank = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * (magnitudes.size() - 1));
+    std::nth_element(magnitudes.begin(), rank, magnitudes.end());
+    typical = *rank;
   }
   const double diagonal = input->GetLength();
   double scale = this->ScaleFactor;
   if (this->ScaleMode == AUTOMATIC)
   {
-    scale = largest > 0.0 && std::isfinite(diagonal) ? this->RelativeToothLength * diagonal / largest
+    scale = typical > 0.0 && std::isfinite(diagonal) ? this->RelativeToothLength * diagonal / typical
                                                      : 0.0;
   }
 

@@ -13,8 +13,9 @@
  *
  * The input needs the point arrays Curvature and Normal (curvature comb) or
  * Torsion and Binormal (torsion comb), as every ShapeSplines curve filter
- * writes them. With ScaleMode AUTOMATIC the longest tooth is
- * RelativeToothLength times the bounding-box diagonal of the input.
+ * writes them. With ScaleMode AUTOMATIC the 95th percentile tooth (in length)
+ * is RelativeToothLength times the bounding-box diagonal of the input, so one
+ * spike does not shrink the rest of the comb; the few teeth beyond are longer.
  *
  * Output: the sample points and the tooth tips; cells: the teeth (two-point
  * lines), then the envelopes. Point array CombValue (the curvature or
@@ -60,8 +61,9 @@ public:
 
   ///@{
   /**
-   * AUTOMATIC (default): the longest tooth is RelativeToothLength times the
-   * input's bounding-box diagonal. FIXED: tooth length = ScaleFactor * value.
+   * AUTOMATIC (default): the 95th percentile tooth is RelativeToothLength
+   * times the input's bounding-box diagonal. FIXED: tooth length =
+   * ScaleFactor * value.
    */
   vtkSetClampMacro(ScaleMode, int, AUTOMATIC, FIXED);
   vtkGetMacro(ScaleMode, int);
@@ -71,7 +73,8 @@ public:
 
   ///@{
   /**
-   * Longest tooth over the bounding-box diagonal in AUTOMATIC mode. Default 0.15.
+   * The 95th percentile tooth over the bounding-box diagonal in AUTOMATIC
+   * mode. Default 0.15.
    */
   vtkSetClampMacro(RelativeToothLength, double, 1e-6, 100.0);
   vtkGetMacro(RelativeToothLength, double);

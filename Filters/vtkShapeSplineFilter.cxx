@@ -38,11 +38,13 @@ using shapesplines::Vec3;
 /// One input line and what became of it.
 struct LineWork
 {
-  vtkIdType CellId = 0;
+  vtkIdType CellId = 0; ///< the input cell, or the connected line's index
+  std::string Name;     ///< how messages name it: "cell 3", "line id 7"
   std::vector<vtkIdType> PointIds;
   shapesplines::FittedPolyline Fit;
   double Length = 0.0; ///< of the sampled curve
   double Chord = 0.0;  ///< distance between its ends (0 when closed)
+  double LargestCurvature = 0.0; ///< of the samples
   std::string Error;
 };
 
@@ -62,8 +64,69 @@ std::vector<LineWork> GatherLines(vtkPolyData* input)
   {
     LineWork line;
     line.CellId = cell.CellId;
+    line.Name = "cell " + std::to_string(cell.CellId);
     line.PointIds = std::move(cell.PointIds);
     line.Error = std::move(cell.Error);
+    lines.push_back(std::move(line));
+  }
+  return lines;
+}
+
+/// The point array that says which line each point belongs to: the one named,
+/// or else the first whose name says line ids (line_id, track, ...); null for
+/// one line of all the points.
+vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
+{
+  if (name && *name && std::string(name) != "None")
+  {
+    return pointData->GetArray(name);
+  }
+  for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pointData->GetArray(a);
+    if (array && array->GetName() && shapesplines::isLineIdName(array->GetName()))
+    {
+      return array;
+    }
+  }
+  return nullptr;
+}
+
+/// Curvature times the line's bounding box diagonal beyond which it is warned
+/// about (a circle through the box has about 2).
+constexpr double SuspectCurvature = 1e6;
+
+double BoxDiagonal(const std::vector<Vec3>& points)
+{
+  Vec3 lowest = points.front();
+  Vec3 highest = points.front();
+  for (const Vec3& p : points)
+  {
+    lowest = lowest.cwiseMin(p);
+    highest = highest.cwiseMax(p);
+  }
+  return (highest - lowest).norm();
+}
+
+/// Lines of the input's points in order (Connect Points), named by their id.
+std::vector<LineWork> ConnectedLines(vtkPolyData* input, vtkDataArray* lineIds)
+{
+  std::vector<LineWork> lines;
+  for (auto& cell : shapesplines::connectedPoints(input->GetNumberOfPoints(), lineIds))
+  {
+    LineWork line;
+    line.CellId = cell.CellId;
+    std::ostringstream name;
+    if (lineIds)
+    {
+      name << lineIds->GetName() << " " << lineIds->GetComponent(cell.PointIds[0], 0);
+    }
+    else
+    {
+      name << "points 0-" << cell.PointIds.size() - 1;
+    }
+    line.Name = name.str();
+    line.PointIds = std::move(cell.PointIds);
     lines.push_back(std::move(line));
   }
   return lines;
@@ -235,7 +298,10 @@ std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
 } // namespace
 
 vtkShapeSplineFilter::vtkShapeSplineFilter() = default;
-vtkShapeSplineFilter::~vtkShapeSplineFilter() = default;
+vtkShapeSplineFilter::~vtkShapeSplineFilter()
+{
+  this->SetLineIdArrayName(nullptr);
+}
 
 const char* vtkShapeSplineFilter::GetParameterizationAsString()
 {
@@ -309,19 +375,51 @@ int vtkShapeSplineFilter::RequestData(
 
 int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
 {
-  if (input->GetNumberOfPoints() == 0 || input->GetNumberOfLines() == 0)
+  // Points without cells, or with vertices only (a table's rows), become lines
+  // in point order when ConnectPoints is on; polygons' points do not.
+  const bool onlyPoints = input->GetNumberOfCells() == input->GetNumberOfVerts();
+  const bool connected = onlyPoints && this->ConnectPoints;
+  if (input->GetNumberOfPoints() == 0 || (input->GetNumberOfLines() == 0 && !connected))
   {
-    vtkWarningMacro("Input has no lines: the output is empty.");
+    vtkWarningMacro("Input has no lines: the output is empty."
+      << (input->GetNumberOfPoints() > 0 && onlyPoints
+             ? " Connect Points makes lines of its points in order."
+             : ""));
     return 1;
   }
+  vtkDataArray* lineIds = nullptr;
+  if (connected)
+  {
+    lineIds = LineIdArray(input->GetPointData(), this->LineIdArrayName);
+    if (!lineIds && this->LineIdArrayName && *this->LineIdArrayName &&
+      std::string(this->LineIdArrayName) != "None")
+    {
+      vtkErrorMacro("No numeric point array named '" << this->LineIdArrayName
+                                                     << "' for the line ids: nothing fitted.");
+      return 1;
+    }
+  }
   const vtkIdType otherCells = input->GetNumberOfCells() - input->GetNumberOfLines();
-  if (otherCells > 0)
+  if (otherCells > 0 && !connected)
   {
     vtkWarningMacro(<< otherCells << " non-line cells (vertices, polygons, strips) ignored.");
   }
 
   // Gather the lines serially; fit them in parallel (curve, audit, sampling plan).
-  std::vector<LineWork> lines = GatherLines(input);
+  std::vector<LineWork> lines = connected ? ConnectedLines(input, lineIds) : GatherLines(input);
+  if (connected)
+  {
+    vtkIdType onLines = 0;
+    for (const LineWork& line : lines)
+    {
+      onLines += static_cast<vtkIdType>(line.PointIds.size());
+    }
+    if (onLines < input->GetNumberOfPoints())
+    {
+      vtkWarningMacro(<< input->GetNumberOfPoints() - onLines << " point(s) with a NaN or "
+                      << "infinite " << lineIds->GetName() << " belong to no line: ignored.");
+    }
+  }
   shapesplines::FitOptions options;
   options.Knots = static_cast<shapesplines::Parameterization>(this->Parameterization);
   options.Closed = this->Closed;
@@ -409,33 +507,28 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     const LineWork& line = lines[k];
     if (!line.Error.empty())
     {
-      vtkErrorMacro("Line (cell " << line.CellId << ") skipped: " << line.Error << ".");
+      vtkErrorMacro("Line (" << line.Name << ") skipped: " << line.Error << ".");
       continue;
     }
     const auto& fit = line.Fit;
-    if (fit.Data.MergedPoints > 0)
-    {
-      vtkWarningMacro("Line (cell " << line.CellId << "): " << fit.Data.MergedPoints
-                                    << " repeated point(s) merged.");
-    }
     if (!fit.Spline)
     {
-      vtkWarningMacro("Line (cell " << line.CellId
+      vtkWarningMacro("Line (" << line.Name
                                     << ") has fewer than two distinct points: passed through.");
     }
     else if (fit.Data.Points.size() == 2)
     {
-      vtkWarningMacro("Line (cell " << line.CellId
+      vtkWarningMacro("Line (" << line.Name
                                     << ") has two distinct points: output is a straight segment.");
     }
     if (this->Approximates() && fit.Spline && fit.interpolates())
     {
-      vtkWarningMacro("Line (cell " << line.CellId
+      vtkWarningMacro("Line (" << line.Name
                                     << ") interpolated, not approximated: too few points for an approximation.");
     }
     if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
     {
-      vtkWarningMacro("Line (cell " << line.CellId << "): the spline's linear system is ill-conditioned"
+      vtkWarningMacro("Line (" << line.Name << "): the spline's linear system is ill-conditioned"
                                     << " (condition estimate " << fit.Spline->conditionEstimate()
                                     << "): its curvature and torsion may be inaccurate. Very uneven"
                                     << " point spacing causes this; try Centripetal parameterization"
@@ -448,7 +541,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     }
     if (fit.Spline && fit.Audit.StrayingSpans > 0)
     {
-      vtkWarningMacro("Line (cell " << line.CellId << "): the curve strays "
+      vtkWarningMacro("Line (" << line.Name << "): the curve strays "
                                     << fit.Audit.PolygonDeviation << " local segment lengths from "
                                     << (fit.interpolates() ? "its data" : "its reference polygon")
                                     << " (span " << fit.Audit.DeviationSpan << ", "
@@ -459,7 +552,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     }
     if (fit.Plan.LengthIncreased)
     {
-      vtkWarningMacro("Line (cell " << line.CellId
+      vtkWarningMacro("Line (" << line.Name
                                     << "): SampleLength too small, sample spacing widened.");
     }
     const size_t count = fit.Spline ? fit.Plan.size() : line.PointIds.size();
@@ -481,7 +574,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     for (size_t j = 0; j < violatingLines.size() && j < DescribedLines; ++j)
     {
       const LineWork& line = lines[violatingLines[j]];
-      lineText << " Line (cell " << line.CellId << "): " << DescribeFailures(line.Fit.Audit) << ".";
+      lineText << " Line (" << line.Name << "): " << DescribeFailures(line.Fit.Audit) << ".";
     }
     if (violatingLines.size() > DescribedLines)
     {
@@ -628,6 +721,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
         std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
         const auto& frame = sampled.Frames[s];
         curvature->SetValue(next, frame.Curvature);
+        line.LargestCurvature = std::max(line.LargestCurvature, frame.Curvature);
         torsion->SetValue(next, frame.Torsion);
         std::copy_n(frame.Tangent.data(), 3, tangent->GetPointer(3 * next));
         std::copy_n(frame.Normal.data(), 3, normal->GetPointer(3 * next));
@@ -649,11 +743,29 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1; // an aborted run leaves the output empty
   }
   this->UpdateProgress(0.95);
+  for (const size_t k : kept)
+  {
+    // A curvature a million times the line's size is a cusp or a kink, not
+    // the shape of the data.
+    const LineWork& line = lines[k];
+    const double diagonal = line.Fit.Spline ? line.Fit.Scale * BoxDiagonal(line.Fit.Data.Points) : 0.0;
+    if (line.LargestCurvature * diagonal > SuspectCurvature)
+    {
+      vtkWarningMacro("Line (" << line.Name << "): curvature up to " << line.LargestCurvature
+                               << ", " << line.LargestCurvature * diagonal
+                               << " over its bounding box diagonal: a cusp or a kink, not the "
+                               << "data's shape. Mode Approximate, another family or the "
+                               << "automatic shape mode avoid it.");
+    }
+  }
   vtkNew<vtkCellArray> outLines;
   outLines->SetData(cellOffsets, connectivity);
 
-  // Per-line cell data.
-  outCD->CopyAllocate(inCD, lineCount);
+  // Per-line cell data: the input cells' (connected points have none).
+  if (!connected)
+  {
+    outCD->CopyAllocate(inCD, lineCount);
+  }
   vtkNew<vtkUnsignedCharArray> preserving;
   preserving->SetName("ShapePreserving");
   preserving->SetNumberOfTuples(lineCount);
@@ -668,11 +780,25 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
   auto deviation = NewArray("PolygonDeviation", 1, lineCount);
   auto tortuosity = NewArray("Tortuosity", 1, lineCount);
   auto condition = NewArray("ConditionEstimate", 1, lineCount);
+  vtkNew<vtkIntArray> merged;
+  merged->SetName("MergedPoints");
+  merged->SetNumberOfTuples(lineCount);
+  // Connected points keep their line ids, in the ids' own type.
+  vtkSmartPointer<vtkDataArray> lineIdValues;
+  if (lineIds)
+  {
+    lineIdValues = vtk::TakeSmartPointer(lineIds->NewInstance());
+    lineIdValues->SetName("LineId");
+    lineIdValues->SetNumberOfTuples(lineCount);
+  }
   for (vtkIdType c = 0; c < lineCount; ++c)
   {
     const LineWork& line = lines[kept[c]];
     const auto& fit = line.Fit;
-    outCD->CopyData(inCD, line.CellId, c);
+    if (!connected)
+    {
+      outCD->CopyData(inCD, line.CellId, c);
+    }
     const int count = fit.Spline ? fit.Audit.violations() : 0;
     preserving->SetValue(c, count == 0 ? 1 : 0);
     violations->SetValue(c, count);
@@ -682,6 +808,11 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
     knotCount->SetValue(c, fit.Spline ? static_cast<int>(fit.Spline->knots().size()) : 0);
     noiseLevel->SetValue(c, fit.NoiseLevel);
+    merged->SetValue(c, fit.Data.MergedPoints);
+    if (lineIdValues)
+    {
+      lineIdValues->SetTuple1(c, lineIds->GetComponent(line.PointIds[0], 0));
+    }
     deviation->SetValue(c, fit.Spline ? fit.Audit.PolygonDeviation : 0.0);
     const auto lineParameters =
       fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
@@ -719,9 +850,13 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
   }
   for (vtkAbstractArray* a :
     std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition,
-      knotCount, noiseLevel, deviation })
+      knotCount, noiseLevel, deviation, merged })
   {
     outCD->AddArray(a);
+  }
+  if (lineIdValues)
+  {
+    outCD->AddArray(lineIdValues);
   }
   for (const auto& a : shapeParameterSummaries)
   {
@@ -742,4 +877,7 @@ void vtkShapeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurveShapeTolerance: " << this->CurveShapeTolerance << "\n";
   os << indent << "CorrectParameters: " << (this->CorrectParameters ? "On" : "Off") << "\n";
   os << indent << "VMTKArrayNames: " << (this->VMTKArrayNames ? "On" : "Off") << "\n";
+  os << indent << "ConnectPoints: " << (this->ConnectPoints ? "On" : "Off") << "\n";
+  os << indent << "LineIdArrayName: " << (this->LineIdArrayName ? this->LineIdArrayName : "(none)")
+     << "\n";
 }

@@ -6,7 +6,7 @@
  * vtkShapeSplineFilter does the VTK plumbing every spline family shares; a
  * subclass only builds its curve through the cleaned points of one line
  * (BuildCurve). For each polyline (or line) cell of the input it:
- * - merges consecutive repeated points (a warning says how many),
+ * - merges consecutive repeated points (cell array MergedPoints counts them),
  * - closes the line if its last point repeats its first, or if Closed is on,
  * - computes the knots (Parameterization), builds the spline, samples it
  *   (NumberOfSubdivisions per span, or about SampleLength apart; the data
@@ -25,7 +25,7 @@
  * ConditionEstimate (of the linear systems solved for the line; a warning
  * names the lines where it is too large to trust, above 4.5e11), the
  * summary of each shape parameter (Max<Name> or Min<Name>), NumberOfKnots
- * (of the curve), NoiseLevel (an approximation's root-mean-square distance
+ * (of the curve), MergedPoints (repeated points merged), NoiseLevel (an approximation's root-mean-square distance
  * from its points; 0 for an interpolation), PolygonDeviation (the largest
  * distance of the curve from its segment of the data, or of the
  * approximation's reference polygon, over the longest of that segment and its
@@ -51,8 +51,11 @@
  * Lines with one distinct point are passed through unchanged (zero frame) and
  * lines with two distinct points become straight segments, each with a
  * warning; lines with NaN or Inf coordinates, or a coordinate beyond 1e300,
- * are skipped with an error naming the cell; vertices, polygons and strips are ignored with a warning. The
- * input is never modified. Lines are processed in parallel with vtkSMPTools.
+ * are skipped with an error naming the cell; vertices, polygons and strips are
+ * ignored with a warning. An input of points without cells or with vertices
+ * only is connected into lines (ConnectPoints). A line whose curvature goes beyond 1e6 over its
+ * bounding box diagonal (a cusp or a kink) is named in a warning. The input
+ * is never modified. Lines are processed in parallel with vtkSMPTools.
  *
  * @sa vtkCubicSplineFilter vtkPolylineShapeAnalysis vtkSplineFilter
  */
@@ -194,6 +197,32 @@ public:
   vtkBooleanMacro(VMTKArrayNames, bool);
   ///@}
 
+  ///@{
+  /**
+   * What an input of points without cells, or with vertices only (a table's
+   * rows from Table To Points), becomes. On (default): its points, in point order, make lines:
+   * one line per value of the line id point array (see LineIdArrayName), in
+   * the order of their first points, or one line of all points. Off: such an
+   * input gives an empty output with a warning. Inputs with line cells are
+   * unaffected.
+   */
+  vtkSetMacro(ConnectPoints, bool);
+  vtkGetMacro(ConnectPoints, bool);
+  vtkBooleanMacro(ConnectPoints, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The point array whose values say which line each connected point belongs
+   * to (ConnectPoints). Empty or "None" (default): the first point array named
+   * line_id, line, lineid, id, cell, cell_id, track or streamline (any case),
+   * or one line when there is none. The output cell array LineId keeps each
+   * line's value. A name that is no numeric point array is an error.
+   */
+  vtkSetStringMacro(LineIdArrayName);
+  vtkGetStringMacro(LineIdArrayName);
+  ///@}
+
 protected:
   vtkShapeSplineFilter();
   ~vtkShapeSplineFilter() override;
@@ -251,6 +280,8 @@ protected:
   double CurveShapeTolerance = 1e-3;
   bool CorrectParameters = true;
   bool VMTKArrayNames = false;
+  bool ConnectPoints = true;
+  char* LineIdArrayName = nullptr;
 
 private:
   /// RequestData's work once its input is checked; std::bad_alloc escapes.
