@@ -13,9 +13,13 @@ writes into DIR (created if missing):
   aorta-variable-degree-approximation.vtp, aorta-tension-quintic-approximation.vtp
                                the approximations of the noisy centerline (knots
                                by cross-validation)
-  aorta-torsion.png            the aorta curves as tubes coloured by torsion
-                               (Cool to Warm, symmetric range clipped to the 95th
-                               percentile of |torsion|), data points as dots
+  headline.png                 the noisy aorta centerlines as tubes: the cubic
+                               spline and the tension quintic approximation
+                               coloured by curvature (top left pair) and by
+                               torsion (top right pair), each pair on one colour
+                               scale set by the approximation; below, Akima's data
+                               through the cubic and the shape-preserving
+                               generalized cubic
   aorta-curvature-torsion.png  curvature and torsion against arc length along
                                line 0 (two ParaView line charts)
   akima-curvature.png          Akima's data points and polygon, and the cubic
@@ -30,7 +34,7 @@ import time
 import numpy as np
 
 from paraview import servermanager
-from paraview.simple import (AssignViewToLayout, ColorBy, CreateLayout, CreateView, Delete, ExtractSelection,
+from paraview.simple import (AssignViewToLayout, Clip, ColorBy, CreateLayout, CreateView, Delete, ExtractSelection,
                              GetColorTransferFunction, GetScalarBar, IDSelectionSource, LoadPlugin,
                              Render, SaveData, SaveScreenshot, Show, Text, Tube, XMLPolyDataReader)
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -48,7 +52,6 @@ output_dir = os.path.abspath(args.output)
 os.makedirs(output_dir, exist_ok=True)
 LoadPlugin(args.plugin, remote=False, ns=globals())
 
-TORSION_PERCENTILE = 95  # colour range of aorta-torsion.png: +- this percentile of |torsion|
 AKIMA_X_STRETCH = 4.0
 written = []
 
@@ -179,6 +182,7 @@ print("noisy centerline (knots by cross-validation); the data's largest discrete
       % " / ".join("%.3g" % k for k in data_curvature))
 print("  %-32s %-17s %-21s %s" % ("family, mode", "ShapeViolations", "largest curvature", "x the data's"))
 aorta_source = results["aorta"][0]
+aorta_approximation = TensionQuinticSpline(Input=aorta_source, Mode="Approximate")
 aorta_cubic, aorta_tensioned = results["aorta"][4], results["aorta"][6]
 for name, proxy in (("cubic (reference)", None),
                     ("generalized cubic, automatic", None),
@@ -187,8 +191,7 @@ for name, proxy in (("cubic (reference)", None),
                     ("qqr, automatic", QQRSpline(Input=aorta_source)),
                     ("variable degree, approximation", VariableDegreeSpline(Input=aorta_source,
                                                                             Mode="Approximate Local")),
-                    ("tension quintic, approximation", TensionQuinticSpline(Input=aorta_source,
-                                                                            Mode="Approximate"))):
+                    ("tension quintic, approximation", aorta_approximation)):
     if proxy is None:
         fitted = aorta_cubic if name.startswith("cubic") else aorta_tensioned
     else:
@@ -251,37 +254,110 @@ Render(curvature_view)
 Render(torsion_view)
 SaveScreenshot(out_path("aorta-curvature-torsion.png"), layout, ImageResolution=[1000, 700])
 
-# =========================================================================== aorta-torsion.png
-src, cubic, analysis, data, curve, audit, _ = results["aorta"]
-torsion = array(curve, "Torsion")
-limit = float(np.percentile(np.abs(torsion), TORSION_PERCENTILE))
-saturated = 100.0 * np.mean(np.abs(torsion) > limit)
-W, H = 700, 1000
-view = white_render_view(W, H)
-tube = Tube(Input=cubic, Radius=0.6, NumberofSides=24)
-tube_display = Show(tube, view)
-ColorBy(tube_display, ("POINTS", "Torsion"))
-lut = GetColorTransferFunction("Torsion")
-lut.ApplyPreset("Cool to Warm", True)
-lut.AutomaticRescaleRangeMode = "Never"
-lut.RescaleTransferFunction(-limit, limit)
-tube_display.Specular = 0.2
-# Data points as dots on the axis, drawn towards the camera so the tube does not hide them
-# (plain points: sphere imposters get their depth wrong under this parallel camera).
-points = Show(src, view)
-points.SetRepresentationType("Points")
-points.ColorArrayName = [None, ""]
-points.AmbientColor = points.DiffuseColor = [0.05, 0.05, 0.05]
-points.PointSize = 3.0
-points.Position = [0.0, 0.0, 5.0]
-style_scalar_bar(GetScalarBar(lut, view), "Torsion", [0.83, 0.3], 0.4, "%-#.0f")
-caption(view, "Aorta centerlines: cubic spline coloured by torsion\n"
-              "colour range +-%.1f, the %dth percentile of the absolute torsion\n"
-              "(%.1f%% of the samples lie beyond; extremes %.0f and %.0f)\nblack dots: the centerline points"
-        % (limit, TORSION_PERCENTILE, saturated, torsion.min(), torsion.max()))
-place_parallel_camera(view, curve.GetBounds(), (40, 560), (30, 850), W, H)
-SaveScreenshot(out_path("aorta-torsion.png"), view, ImageResolution=[W, H])
-Delete(view)
+# =========================================================================== headline.png
+# The noisy aorta as users want it: the approximation's curvature and torsion next
+# to the cubic's, on one colour scale per quantity (set by the approximation, so
+# the cubic's noise spikes saturate), and the Akima data through the
+# shape-preserving generalized cubic next to the cubic's overshoot.
+src, cubic, analysis, data, curve, audit, tensioned = results["aorta"]
+smooth = servermanager.Fetch(aorta_approximation)
+k_limit = float(np.percentile(array(smooth, "Curvature"), 99))
+t_limit = float(np.percentile(np.abs(array(smooth, "Torsion")), 98))
+W, H = 1400, 1000
+AORTA_H = 700
+layout = CreateLayout("headline")
+layout.SplitVertical(0, AORTA_H / H)  # 1: the aorta row, 2: the Akima row
+layout.SplitHorizontal(1, 0.5)  # 3: curvature pair, 4: torsion pair
+layout.SplitHorizontal(3, 0.5)
+layout.SplitHorizontal(4, 0.5)
+layout.SplitHorizontal(2, 0.5)
+aorta_w = W // 4
+
+
+def aorta_panel(cell, proxy, fitted, name, limits, preset, title, with_bar):
+    view = white_render_view(aorta_w, AORTA_H)
+    AssignViewToLayout(view, layout, cell)
+    tube_display = Show(Tube(Input=proxy, Radius=0.6, NumberofSides=16), view)
+    ColorBy(tube_display, ("POINTS", name))
+    lut = GetColorTransferFunction(name)
+    lut.ApplyPreset(preset, True)
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RescaleTransferFunction(*limits)
+    values = array(fitted, name)
+    beyond = 100.0 * np.mean((values < limits[0]) | (values > limits[1]))
+    caption(view, "%s\n%s %.3g .. %.3g\n(%.0f%% of samples beyond the scale)"
+            % (title, name.lower(), values.min(), values.max(), beyond), size=13)
+    if with_bar:
+        style_scalar_bar(GetScalarBar(lut, view), name, [0.78, 0.08], 0.35, "%-#.2f", font=13)
+    place_parallel_camera(view, curve.GetBounds(), (20, aorta_w - 90), (20, AORTA_H - 110), aorta_w, AORTA_H)
+    return view
+
+
+views = [aorta_panel(7, cubic, curve, "Curvature", (0.0, k_limit), "Turbo", "Aorta: cubic spline", False),
+         aorta_panel(8, aorta_approximation, smooth, "Curvature", (0.0, k_limit), "Turbo",
+                     "Aorta: tension quintic,\nMode Approximate", True),
+         aorta_panel(9, cubic, curve, "Torsion", (-t_limit, t_limit), "Cool to Warm", "Aorta: cubic spline",
+                     False),
+         aorta_panel(10, aorta_approximation, smooth, "Torsion", (-t_limit, t_limit), "Cool to Warm",
+                     "Aorta: tension quintic,\nMode Approximate", True)]
+
+akima_src, akima_cubic, _, _, akima_curve, akima_audit, akima_tensioned = results["akima"]
+akima_w, akima_h = W // 2, H - AORTA_H
+# Akima's flat run y = 10 and the start of the rise, y exaggerated: the cubic's
+# undershoot (0.08 below the run) and ripples show; the shape-preserving curve stays flat.
+zoom_x, zoom_y = (0.0, 10.5), (9.85, 10.6)
+akima_scale = [30.0, 300.0, 1.0]
+zoom_bounds = [zoom_x[0] * akima_scale[0], zoom_x[1] * akima_scale[0],
+               zoom_y[0] * akima_scale[1], zoom_y[1] * akima_scale[1], 0.0, 0.0]
+
+
+def below_zoom(proxy):
+    clip = Clip(Input=proxy, ClipType="Plane", Invert=1)
+    clip.ClipType.Origin = [0.0, zoom_y[1], 0.0]
+    clip.ClipType.Normal = [0.0, 1.0, 0.0]
+    return clip
+
+
+for cell, proxy, fitted, title in (
+        (5, akima_cubic, akima_curve, "Akima's data: cubic spline"),
+        (6, GeneralizedCubicSpline(Input=akima_src), akima_tensioned,
+         "Akima's data: generalized cubic, automatic tension (shape-preserving)")):
+    view = white_render_view(akima_w, akima_h)
+    AssignViewToLayout(view, layout, cell)
+    # Cut above the zoom so the rise does not run through the caption.
+    polygon = Show(below_zoom(reader("akima.vtp")), view)
+    polygon.SetRepresentationType("Wireframe")
+    polygon.ColorArrayName = [None, ""]
+    polygon.AmbientColor = polygon.DiffuseColor = [0.7, 0.7, 0.7]
+    polygon.LineWidth = 2.0
+    polygon.Scale = akima_scale
+    polygon.Position = [0.0, 0.0, -20.0]
+    line = Show(below_zoom(proxy), view)
+    line.ColorArrayName = [None, ""]
+    line.AmbientColor = line.DiffuseColor = [0.1, 0.3, 0.8]
+    line.LineWidth = 4.0
+    line.Ambient, line.Diffuse = 1.0, 0.0
+    line.Scale = akima_scale
+    dots = Show(akima_src, view)
+    dots.SetRepresentationType("Points")
+    dots.ColorArrayName = [None, ""]
+    dots.AmbientColor = dots.DiffuseColor = [0.9, 0.0, 0.9]
+    dots.PointSize = 12.0
+    dots.RenderPointsAsSpheres = 1
+    dots.Scale = akima_scale
+    dots.Position = [0.0, 0.0, 20.0]
+    lowest = vtk_to_numpy(fitted.GetPoints().GetData())[:, 1].min()
+    caption(view, "%s: ShapeViolations %d\nthe data never go below y = 10; the curve goes down to y = %.3f\n"
+                  "(zoom on x 0 .. 10.5, y 9.85 .. 10.6, y drawn 10x more than x; magenta: data)"
+            % (title, array(fitted, "ShapeViolations", True)[0], lowest), size=13)
+    place_parallel_camera(view, zoom_bounds, (20, akima_w - 20), (10, akima_h - 75), akima_w, akima_h)
+    views.append(view)
+layout.SetSize(W, H)
+for view in views:
+    Render(view)
+SaveScreenshot(out_path("headline.png"), layout, ImageResolution=[W, H])
+print("headline.png: curvature scale 0 .. %.3g (99th percentile of the approximation's), torsion +-%.3g "
+      "(98th percentile of its |torsion|)" % (k_limit, t_limit))
 
 # =========================================================================== akima-curvature.png
 src, cubic, analysis, data, curve, audit, _ = results["akima"]

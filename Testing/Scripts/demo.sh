@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # README command 1: installs what is missing, builds, and runs the demo on Data/:
-# the cubic spline and the shape analysis of the aorta centerline and the Akima
+# the cubic spline, the approximation and the shape analysis of the aorta centerline and the Akima
 # data, written as .vtp files and PNG pictures into build/demo.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
