@@ -6,7 +6,7 @@ import math
 import sys
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import shapesplines
 from shapesplines.arrays import fit_curves
@@ -88,6 +88,116 @@ for call, fragment, what in [(lambda: fit_curves(nan_points), "not finite", "NaN
         check(False, "ValueError for a %s" % what)
     except ValueError as e:
         check(fragment in str(e), "ValueError for a %s" % what, str(e))
+
+
+
+def raises(call, message, what):
+    """call() must raise a ValueError whose message contains `message`."""
+    try:
+        call()
+        check(False, "ValueError for %s" % what)
+    except ValueError as e:
+        check(message in str(e), "ValueError for %s" % what, str(e))
+
+
+# The sampling arguments, refused where the filter's setters would clamp
+# silently, and the filter's names for them taken, not overridden.
+check(len(fit_curves(points, number_of_subdivisions=4).points) == 96 * 4 + 1,
+      "number_of_subdivisions=4 is samples=4 (not replaced by the default 10)")
+check(np.array_equal(fit_curves(points, sample_length=0.5).points, fit_curves(points, arc_length=0.5).points),
+      "sample_length=0.5 is arc_length=0.5")
+for value in (0, -3, 2.5, 100001, True):
+    raises(lambda: fit_curves(points, samples=value),
+           "samples (per span) must be a whole number from 1 to 100000, not %r" % value, "samples=%r" % value)
+for value in (0, -1.0, float("nan"), float("inf")):
+    raises(lambda: fit_curves(points, arc_length=value),
+           "arc_length must be a positive, finite distance between samples, not %r" % value,
+           "arc_length=%r" % value)
+for kwargs, message in [
+        (dict(samples=4, number_of_subdivisions=4), "samples and number_of_subdivisions are the same setting"),
+        (dict(arc_length=0.5, sample_length=0.5), "arc_length and sample_length are the same setting"),
+        (dict(samples=4, arc_length=0.5), "give samples (per span) or arc_length (a spacing along the curve), not both"),
+        (dict(sampling_mode="arc_length"), "sampling_mode follows from samples or arc_length")]:
+    raises(lambda: fit_curves(points, **kwargs), message, ", ".join("%s=%r" % kv for kv in kwargs.items()))
+# The filter's own limit, in this function's words.
+raises(lambda: fit_curves([points] * 3, samples=100000),
+       "more than the 20000000 a run may make (about 400 bytes each while it is made): lower samples "
+       "(now 100000)", "3 x 9.6e6 samples")
+
+# No curves, wrong shapes; NaN, Inf and huge coordinates as the filter reports them.
+raises(lambda: fit_curves([]), "no curves given", "an empty list")
+raises(lambda: fit_curves(np.zeros((0, 5, 3))), "no curves given", "an empty (0, 5, 3) array")
+raises(lambda: fit_curves(np.zeros(3)), "expected an (n, 3) array of points or a list of them, got shape (3,)",
+       "a 1-D array")
+raises(lambda: fit_curves([[0, 0, 0], [1, 0, 0], [2, 1, 0]]),
+       "line 0: expected an (n, 3) array of points, got shape (3,) (one line is one array: np.asarray(points))",
+       "a list of points")
+inf_points = points.copy()
+inf_points[7, 2] = -float("inf")
+huge_points = points.copy()
+huge_points[2, 0] = 1e301
+raises(lambda: fit_curves([points, inf_points]), "Line (cell 1) skipped: point 7 is not finite.",
+       "an Inf point on the second line")
+raises(lambda: fit_curves(huge_points), "Line (cell 0) skipped: point 2 has a coordinate beyond 1e300",
+       "a coordinate of 1e301")
+
+# point_data: carried onto the samples as the filter carries input point arrays.
+radius = 1.0 + 0.5 * np.sin(np.arange(len(points)) / 7.0)
+labels = np.arange(len(points)) // 10
+flags = np.arange(len(points)) % 3 == 0
+pair = np.column_stack([radius, -radius]).astype(np.float32)
+carried = fit_curves(points, samples=5, point_data={"radius": radius, "label": labels, "flag": flags,
+                                                    "pair": pair, "Curvature": np.ones(len(points))})
+# The samples' positions in data point units (5 per span: none exactly halfway,
+# where rounding decides which point is the nearer).
+where = np.arange(len(carried.points)) / 5.0
+nearer = np.rint(where).astype(int)
+check(np.allclose(carried.point_data["radius"], np.interp(where, np.arange(len(points)), radius), rtol=0, atol=1e-14)
+      and np.array_equal(carried.point_data["radius"][::5], radius),
+      "point_data floats: linear between the data points around each sample, exact at the points")
+check(carried.point_data["label"].dtype == labels.dtype and np.array_equal(carried.point_data["label"], labels[nearer])
+      and carried.point_data["flag"].dtype == bool and np.array_equal(carried.point_data["flag"], flags[nearer]),
+      "point_data integers and booleans: the nearer data point's, in their dtypes")
+check(carried.point_data["pair"].shape == (len(carried.points), 2) and carried.point_data["pair"].dtype == np.float32
+      and np.allclose(carried.point_data["pair"][:, 1], -carried.point_data["radius"], atol=1e-6),
+      "point_data (n, 2) float32: (m, 2) float32")
+check(np.all(carried.point_data["Curvature"] == 1) and abs(carried.curvature[len(where) // 2] - 0.4) < 2e-3
+      and sorted(carried.point_arrays) == sorted(fit_curves(points, samples=5).point_arrays),
+      "point_data named like a filter array (Curvature) neither replaces it nor joins point_arrays")
+# An approximation's samples lie between data points its own knots do not
+# mark: the values must be the filter's own for an input point array.
+rng = np.random.default_rng(3)
+noisy = helix(16, 4) + rng.normal(0, 0.01, (65, 3))
+weights = rng.uniform(0, 1, len(noisy))
+smooth = fit_curves(noisy, family="quintic", mode="approximate", point_data={"weight": weights})
+spline = shapesplines.vtkTensionQuinticSplineFilter()
+spline.SetModeToApproximate()
+poly = _polydata([noisy])
+poly.GetPointData().AddArray(numpy_to_vtk(weights, deep=True))
+poly.GetPointData().GetArray(0).SetName("weight")
+spline.SetInputData(poly)
+spline.Update()
+check(np.array_equal(smooth.point_data["weight"], vtk_to_numpy(spline.GetOutput().GetPointData().GetArray("weight"))),
+      "point_data on an approximation: the filter's own values for an input point array")
+ring = np.array([[math.cos(a), math.sin(a), 0] for a in np.linspace(0, 2 * math.pi, 17)[:-1]])
+rings = fit_curves([ring, 2 * ring], closed=True, samples=2,
+                   point_data={"k": [np.arange(16.0), 10 + np.arange(16.0)]})
+check([len(c.points) for c in rings] == [32, 32] and np.isclose(rings[0].point_data["k"][-1], 7.5)
+      and np.isclose(rings[1].point_data["k"][-1], 17.5) and rings[1].point_data["k"][2] == 11.0,
+      "point_data on a list of closed lines: each line its own, the seam span between the last and first points")
+for kwargs, message, what in [
+        (dict(point_data={"r": radius[:-1]}), "point_data['r']: expected shape (97,) or (97, k), one value or row "
+         "per point, got (96,)", "point_data one value short"),
+        (dict(point_data={"r": np.array(["a"] * 97)}), "point_data['r']: expected integers, booleans, float32 or "
+         "float64, got <U1", "point_data of strings"),
+        (dict(point_data=[radius]), "point_data must be a dict {name: array}, not list", "point_data not a dict"),
+        (dict(point_data={"": radius}), "point_data: names must be non-empty strings", "an empty name")]:
+    raises(lambda: fit_curves(points, **kwargs), message, what)
+raises(lambda: fit_curves([points, points], point_data={"r": [radius]}),
+       "point_data['r']: expected a list of 2 arrays, one per line", "point_data for one line of two")
+raises(lambda: fit_curves([points, points], point_data={"r": [radius, pair]}),
+       "point_data['r'] of line 1: shape (97, 2), but line 0 has (97,): every line needs the same components",
+       "point_data with different components per line")
 
 if failures:
     print("\n%d checks FAILED" % len(failures))

@@ -3,19 +3,42 @@
 Run with PYTHONPATH at the build's site-packages, by Debian's python3 (with
 ParaView's vtkmodules) and by pvpython:
     python3 TestPythonImport.py --data Data
+and by an interpreter without VTK (a virtualenv's, pyenv's; Debian's python3
+-S stands in for them), where the import must say which interpreter to use:
+    python3 -S TestPythonImport.py --data Data --without-vtk
 """
 import argparse
+import importlib.util
 import math
 import sys
 
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-
-import shapesplines
-from shapesplines import vtkCubicSplineFilter, vtkPolylineShapeAnalysis
-
 parser = argparse.ArgumentParser()
 parser.add_argument("--data", required=True)
+parser.add_argument("--without-vtk", action="store_true")
 args = parser.parse_args()
+
+if args.without_vtk:
+    if importlib.util.find_spec("vtkmodules"):
+        print("FAIL %s has vtkmodules: this check needs an interpreter without VTK" % sys.executable)
+        sys.exit(1)
+    try:
+        import shapesplines  # noqa: F401
+        print("FAIL shapesplines imported without VTK")
+        sys.exit(1)
+    except ImportError as e:
+        message = str(e)
+    print("%s: %s" % (sys.executable, message))
+    hints = ["No module named 'vtkmodules'", "this Python (%s)" % sys.executable,
+             "Debian's /usr/bin/python3", "python3-paraview", "pvpython"]
+    missing = [hint for hint in hints if hint not in message]
+    for hint in missing:
+        print("FAIL the message does not say %r" % hint)
+    sys.exit(1 if missing else 0)
+
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader  # noqa: E402
+
+import shapesplines  # noqa: E402
+from shapesplines import vtkCubicSplineFilter, vtkPolylineShapeAnalysis  # noqa: E402
 
 reader = vtkXMLPolyDataReader()
 reader.SetFileName(args.data + "/helix.vtp")

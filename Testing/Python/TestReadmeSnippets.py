@@ -5,7 +5,8 @@ would run it from the repository:
     <!-- test: shell -->      sh, with the build's bin/ on PATH
     <!-- test: cpp FILE -->   the block appears verbatim in FILE (which another
                               test compiles and runs)
-Usage: TestReadmeSnippets.py --source DIR --build DIR --temp DIR --xvfb-run CMD...
+    <!-- test: file FILE -->  the block is FILE, whole
+Usage: TestReadmeSnippets.py --source DIR --build DIR --temp DIR --pvpython EXE --python EXE
 """
 import argparse
 import os
@@ -27,12 +28,15 @@ with open(os.path.join(args.source, "README.md")) as f:
 snippets = re.findall(r"<!-- test: (\w+)([^>]*?) -->\n```\w*\n(.*?)```", readme, re.S)
 work = os.path.join(args.temp, "readme")
 shutil.rmtree(work, ignore_errors=True)
-# The snippets use repository paths (Data/, build/...): run them in a copy of
-# that layout whose build/ is the build under test.
+# The snippets use repository paths (Data/, Testing/, build/...): run them in
+# a copy of that layout whose build/ is the build under test.
 os.makedirs(work)
-os.symlink(os.path.join(args.source, "Data"), os.path.join(work, "Data"))
+for directory in ("Data", "Testing"):
+    os.symlink(os.path.join(args.source, directory), os.path.join(work, directory))
 os.symlink(args.build, os.path.join(work, "build"))
 env = dict(os.environ)
+# What the snippets install into $HOME goes into the test's directory.
+env["HOME"] = work
 env["PYTHONPATH"] = os.path.join(args.build, "lib", "python3.11", "site-packages")
 env["PATH"] = os.path.join(args.build, "bin") + os.pathsep + env["PATH"]
 
@@ -41,12 +45,14 @@ kinds = set()
 for number, (kind, target, code) in enumerate(snippets):
     kinds.add(kind)
     label = "README snippet %d (%s)" % (number + 1, kind)
-    if kind == "cpp":
+    if kind in ("cpp", "file"):
         with open(os.path.join(args.source, target.strip())) as f:
-            ok = code in f.read()
-        print(("ok   " if ok else "FAIL ") + label + ": in " + target.strip())
+            text = f.read()
+        ok = code in text if kind == "cpp" else code == text
+        relation = "in " if kind == "cpp" else "the whole of "
+        print(("ok   " if ok else "FAIL ") + label + ": " + relation + target.strip())
         if not ok:
-            failures.append(label + " is not in " + target.strip())
+            failures.append(label + " is not " + relation + target.strip())
         continue
     script = os.path.join(work, "snippet%d" % (number + 1))
     with open(script, "w") as f:
@@ -62,7 +68,7 @@ for number, (kind, target, code) in enumerate(snippets):
     if result.returncode != 0:
         failures.append(label)
 
-for kind in ("pvpython", "python", "shell", "cpp"):
+for kind in ("pvpython", "python", "shell", "cpp", "file"):
     if kind not in kinds:
         failures.append("no %s snippet found in README.md" % kind)
 if failures:
