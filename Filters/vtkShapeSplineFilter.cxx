@@ -16,19 +16,22 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMP.h"
 #include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <chrono>
+#include <cstdlib>
 #include <exception>
+#include <future>
 #include <initializer_list>
 #include <limits>
 #include <new>
 #include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 
 namespace
@@ -90,6 +93,23 @@ vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
     }
   }
   return nullptr;
+}
+
+/// The SMP configuration a run uses (see NumberOfThreads).
+vtkSMPTools::Config ThreadsFor(int numberOfThreads)
+{
+  std::string backend = vtkSMPTools::GetBackend();
+  if (numberOfThreads == 1)
+  {
+    backend = "Sequential";
+  }
+#if VTK_SMP_ENABLE_STDTHREAD
+  else if (backend == "Sequential" && !std::getenv("VTK_SMP_BACKEND_IN_USE"))
+  {
+    backend = "STDThread"; // the backend nobody chose: one thread would waste the cores
+  }
+#endif
+  return vtkSMPTools::Config{ numberOfThreads, backend, false };
 }
 
 /// Curvature times the line's bounding box diagonal beyond which it is warned
@@ -210,10 +230,11 @@ std::pair<int, double> DataInterval(
 
 /**
  * Progress by lines done, weighted by their points, and inside a long line by
- * the math core's ProgressCallback; reported from the thread that runs
- * RequestData only (VTK's events are not thread-safe; with the sequential SMP
- * backend, Debian's default, that is every line) at most once per 1% of the
- * phase [From, To], never backwards.
+ * the math core's ProgressCallback. Reported by publish() on the thread that
+ * runs RequestData only (VTK's events and ParaView's progress bar are not
+ * thread-safe), at most once per 1% of the phase [From, To], never
+ * backwards: as the lines are done with the Sequential backend (they run on
+ * this thread), every 50 ms with a threaded one (WhilePublishing).
  */
 class LineProgress
 {
@@ -228,35 +249,70 @@ public:
 
   void lineDone(const LineWork& line)
   {
-    this->report(this->Done += static_cast<vtkIdType>(line.PointIds.size()));
+    this->Done += static_cast<vtkIdType>(line.PointIds.size());
+    if (this->Inline)
+    {
+      this->publish();
+    }
   }
 
   /// Inside a line not yet done: a fraction of its points. False once aborted.
   bool within(const LineWork& line, double fraction)
   {
-    this->report(this->Done + fraction * static_cast<double>(line.PointIds.size()));
+    this->Partial = this->Done + fraction * static_cast<double>(line.PointIds.size());
+    if (this->Inline)
+    {
+      this->publish();
+    }
     return !this->Algorithm->GetAbortExecute();
   }
 
-private:
-  void report(double done)
+  void publish()
   {
-    const double fraction = this->Total > 0 ? done / this->Total : 1.0;
-    if (std::this_thread::get_id() == this->Owner && fraction - this->Reported >= 0.01 &&
-      !this->Algorithm->GetAbortExecute())
+    const double done = std::max(static_cast<double>(this->Done), this->Partial.load());
+    const double fraction = this->Total > 0 ? std::min(done / this->Total, 1.0) : 1.0;
+    if (fraction - this->Reported >= 0.01 && !this->Algorithm->GetAbortExecute())
     {
       this->Reported = fraction;
       this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * fraction);
     }
   }
 
+private:
   vtkAlgorithm* Algorithm;
   double From, To;
   vtkIdType Total;
   std::atomic<vtkIdType> Done{ 0 };
-  const std::thread::id Owner = std::this_thread::get_id();
-  double Reported = 0.0; ///< only read and written by Owner
+  std::atomic<double> Partial{ 0.0 };
+  double Reported = 0.0; ///< only read and written by publish()
+
+public:
+  /// The Sequential backend runs the lines on this thread: it publishes as it goes.
+  const bool Inline = std::string(vtkSMPTools::GetBackend()) == "Sequential";
 };
+
+/**
+ * Runs work (a vtkSMPTools::For over the lines) on a thread of its own while
+ * this thread publishes its progress every 50 ms: with the threaded backend
+ * the caller would otherwise wait without a word (and ParaView's Cancel,
+ * which acts from a progress event, could not stop it).
+ */
+template <typename Work>
+void WhilePublishing(LineProgress& progress, Work&& work)
+{
+  if (progress.Inline)
+  {
+    work();
+    return;
+  }
+  auto running = std::async(std::launch::async, std::forward<Work>(work));
+  while (running.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready)
+  {
+    progress.publish();
+  }
+  running.get(); // rethrows what the work threw
+  progress.publish();
+}
 
 template <typename Array>
 vtkSmartPointer<Array> Renamed(Array* source, const char* name)
@@ -362,7 +418,10 @@ int vtkShapeSplineFilter::RequestData(
   }
   try
   {
-    return this->FitLines(input, output);
+    int status = 1;
+    vtkSMPTools::LocalScope(
+      ThreadsFor(this->NumberOfThreads), [&] { status = this->FitLines(input, output); });
+    return status;
   }
   catch (const std::bad_alloc&)
   {
@@ -459,7 +518,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     inputLinePoints += static_cast<vtkIdType>(line.PointIds.size());
   }
   LineProgress fitting(this, inputLinePoints, 0.0, 0.8);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), [&](vtkIdType begin, vtkIdType end) {
+  const auto fitRange = [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
     {
       LineWork& line = lines[k];
@@ -489,7 +548,9 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
       }
       fitting.lineDone(line);
     }
-  });
+  };
+  WhilePublishing(
+    fitting, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), fitRange); });
   if (this->GetAbortExecute())
   {
     return 1; // an aborted run leaves the output empty
@@ -661,7 +722,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     keptLinePoints += static_cast<vtkIdType>(lines[k].PointIds.size());
   }
   LineProgress sampling(this, keptLinePoints, 0.8, 0.95);
-  vtkSMPTools::For(0, lineCount, [&](vtkIdType begin, vtkIdType end) {
+  const auto writeRange = [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end && !this->GetAbortExecute(); ++c)
     {
       LineWork& line = lines[kept[c]];
@@ -737,7 +798,8 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
       }
       sampling.lineDone(line);
     }
-  });
+  };
+  WhilePublishing(sampling, [&] { vtkSMPTools::For(0, lineCount, writeRange); });
   if (this->GetAbortExecute())
   {
     return 1; // an aborted run leaves the output empty
@@ -878,6 +940,7 @@ void vtkShapeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CorrectParameters: " << (this->CorrectParameters ? "On" : "Off") << "\n";
   os << indent << "VMTKArrayNames: " << (this->VMTKArrayNames ? "On" : "Off") << "\n";
   os << indent << "ConnectPoints: " << (this->ConnectPoints ? "On" : "Off") << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "LineIdArrayName: " << (this->LineIdArrayName ? this->LineIdArrayName : "(none)")
      << "\n";
 }

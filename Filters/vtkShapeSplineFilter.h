@@ -199,6 +199,20 @@ public:
 
   ///@{
   /**
+   * The most threads the lines are fitted on. 0 (default): all the machine's
+   * cores; and when the process runs VTK's Sequential backend (Debian's VTK,
+   * pvpython and ParaView start with it) and the user has not chosen one with
+   * VTK_SMP_BACKEND_IN_USE, the filter runs its lines on the STDThread
+   * backend for the run (vtkSMPTools::LocalScope: nothing else in the
+   * process changes). 1: one thread. The output is the same whatever the
+   * count.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, 4096);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /**
    * What an input of points without cells, or with vertices only (a table's
    * rows from Table To Points), becomes. On (default): its points, in point order, make lines:
    * one line per value of the line id point array (see LineIdArrayName), in
@@ -281,6 +295,7 @@ protected:
   bool CorrectParameters = true;
   bool VMTKArrayNames = false;
   bool ConnectPoints = true;
+  int NumberOfThreads = 0;
   char* LineIdArrayName = nullptr;
 
 private:

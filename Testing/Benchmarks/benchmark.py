@@ -77,8 +77,14 @@ def best_time(run, repeats, budget=5.0):
     return best, output_points
 
 
+def threads(backend):
+    """The filters' NumberOfThreads for a backend: they run threaded unless asked for one thread."""
+    return {"NumberOfThreads": 1} if backend == "Sequential" else {}
+
+
 def ours(poly, backend, family="CubicSpline", **properties):
     vtkSMPTools.SetBackend(backend)
+    properties.update(threads(backend))
     algorithm = getattr(simple, family)(Input=simple.Line(), **properties).GetClientSideObject()
     algorithm.SetInputDataObject(0, poly)
 
@@ -254,6 +260,7 @@ def fitted(family, poly, backend="STDThread", **properties):
     """The filter's output and the seconds it took (one filter per family and
     properties, made once: a ParaView proxy costs more than a short line's fit)."""
     vtkSMPTools.SetBackend(backend)
+    properties.update(threads(backend))
     key = (family, tuple(sorted(properties.items())))
     if key not in FILTERS:
         FILTERS[key] = getattr(simple, family)(Input=simple.Line(), **properties).GetClientSideObject()
@@ -506,7 +513,7 @@ def threads_identical(poly):
     outputs = []
     for backend in ("Sequential", "STDThread"):
         vtkSMPTools.SetBackend(backend)
-        algorithm = simple.CubicSpline(Input=simple.Line()).GetClientSideObject()
+        algorithm = simple.CubicSpline(Input=simple.Line(), **threads(backend)).GetClientSideObject()
         algorithm.SetInputDataObject(0, poly)
         algorithm.Update()
         out = algorithm.GetOutputDataObject(0)

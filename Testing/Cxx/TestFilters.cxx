@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <thread>
 #include <functional>
 #include <initializer_list>
 #include <iostream>
@@ -959,6 +960,7 @@ TEST(Parallel, SameOutputWithThreadsAndSequential)
 
   auto runWith = [&](const char* backend) {
     BackendScope scope(backend, 4);
+    filter->SetNumberOfThreads(std::string(backend) == "Sequential" ? 1 : 0);
     EXPECT_TRUE(scope.Selected) << backend << " backend not available";
     EXPECT_STREQ(vtkSMPTools::GetBackend(), backend);
     if (std::string(backend) == "STDThread")
@@ -986,11 +988,107 @@ TEST(Parallel, SameOutputWithThreadsAndSequential)
   EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
 }
 
+TEST(Parallel, ThreadsByDefaultWhenNobodyChoseABackend)
+{
+  // What the filter runs on, seen from its progress events (sent inside the run).
+  const auto input = RandomLines(50);
+  vtkNew<vtkCubicSplineFilter> filter;
+  filter->SetInputData(input);
+  // The executive's first and last events come outside the run: the backend
+  // at the event halfway (after the fit) is the run's.
+  struct Seen
+  {
+    std::string Backend;
+    int Threads = 0;
+  } seen;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetClientData(&seen);
+  onProgress->SetCallback([](vtkObject*, unsigned long, void* clientData, void* callData) {
+    auto* s = static_cast<Seen*>(clientData);
+    if (*static_cast<double*>(callData) == 0.8)
+    {
+      s->Backend = vtkSMPTools::GetBackend();
+      s->Threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+    }
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  const char* chosen = std::getenv("VTK_SMP_BACKEND_IN_USE");
+  const std::string saved = chosen ? chosen : "";
+  unsetenv("VTK_SMP_BACKEND_IN_USE");
+  BackendScope scope("Sequential", 0);
+  filter->Update();
+  EXPECT_EQ(seen.Backend, "STDThread");
+  EXPECT_GT(seen.Threads, 1);
+  EXPECT_STREQ(vtkSMPTools::GetBackend(), "Sequential") << "the process's backend changed";
+
+  filter->SetNumberOfThreads(1);
+  filter->Modified();
+  seen = Seen{};
+  filter->Update();
+  EXPECT_EQ(seen.Backend, "Sequential");
+  EXPECT_EQ(seen.Threads, 1);
+
+  // A backend the user chose is kept.
+  setenv("VTK_SMP_BACKEND_IN_USE", "Sequential", 1);
+  filter->SetNumberOfThreads(0);
+  filter->Modified();
+  seen = Seen{};
+  filter->Update();
+  EXPECT_EQ(seen.Backend, "Sequential");
+  if (chosen)
+  {
+    setenv("VTK_SMP_BACKEND_IN_USE", saved.c_str(), 1);
+  }
+  else
+  {
+    unsetenv("VTK_SMP_BACKEND_IN_USE");
+  }
+}
+
+TEST(Progress, ThreadedRunsReportOnTheCallingThreadAndStopWhenAsked)
+{
+  // Threads by default: the lines run on the pool, the events come from here
+  // (every 50 ms: a line of 2e5 points takes about a second on this machine).
+  Polyline helix;
+  for (int i = 0; i < 200000; ++i)
+  {
+    helix.push_back(HelixPoint(0.3 * i));
+  }
+  const auto input = PolylinesData({ helix });
+  vtkNew<vtkCubicSplineFilter> filter;
+  filter->SetInputData(input);
+  struct Watch
+  {
+    std::thread::id Caller = std::this_thread::get_id();
+    int ElsewhereEvents = 0;
+    std::vector<double> Values;
+  } watch;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&watch);
+  observer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
+    auto* w = static_cast<Watch*>(clientData);
+    w->ElsewhereEvents += std::this_thread::get_id() != w->Caller ? 1 : 0;
+    w->Values.push_back(*static_cast<double*>(callData));
+    if (w->Values.back() > 0.0 && w->Values.back() < 0.8)
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1); // at the first event of the fit
+    }
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  EXPECT_EQ(watch.ElsewhereEvents, 0);
+  const bool midFit = std::any_of(
+    watch.Values.begin(), watch.Values.end(), [](double v) { return v > 0.0 && v < 0.8; });
+  EXPECT_TRUE(midFit) << "no progress while the line was fitted";
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(Progress, MovesWithTheLinesAndAbortLeavesAnEmptyOutput)
 {
   const auto input = RandomLines(400);
   BackendScope scope("Sequential", 1);
   vtkNew<vtkCubicSplineFilter> filter;
+  filter->SetNumberOfThreads(1); // deterministic events: one per 1% of the lines
   filter->SetInputData(input);
   MessageLog log({ filter });
   struct Watch
