@@ -8,6 +8,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIdTypeArray.h"
@@ -93,6 +94,36 @@ vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
     }
   }
   return nullptr;
+}
+
+/**
+ * Field data TorsionColorRange: -m, m with m the 95th percentile of |torsion|,
+ * a colour range centred on zero that a few noise spikes do not squash
+ * (ParaView's client reads it; the data's own range is the default).
+ */
+vtkSmartPointer<vtkDoubleArray> TorsionColorRange(vtkDoubleArray* torsion)
+{
+  std::vector<double> magnitudes;
+  magnitudes.reserve(static_cast<size_t>(torsion->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < torsion->GetNumberOfTuples(); ++i)
+  {
+    const double t = std::abs(torsion->GetValue(i));
+    if (std::isfinite(t))
+    {
+      magnitudes.push_back(t);
+    }
+  }
+  double typical = 0.0;
+  if (!magnitudes.empty())
+  {
+    const auto rank = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * (magnitudes.size() - 1));
+    std::nth_element(magnitudes.begin(), rank, magnitudes.end());
+    typical = *rank;
+  }
+  auto range = NewArray("TorsionColorRange", 1, 2);
+  range->SetValue(0, -typical);
+  range->SetValue(1, typical);
+  return range;
 }
 
 /// The SMP configuration a run uses (see NumberOfThreads).
@@ -904,6 +935,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     outPD->AddArray(a);
   }
   outPD->SetActiveScalars("Torsion");
+  output->GetFieldData()->AddArray(TorsionColorRange(torsion));
   if (this->VMTKArrayNames)
   {
     outPD->AddArray(Renamed(tangent.Get(), "FrenetTangent"));

@@ -31,7 +31,10 @@
  * approximation's reference polygon, over the longest of that segment and its
  * neighbours: beyond 0.5 the line is not ShapePreserving, its straying spans
  * count among its ShapeViolations, and a warning names it), and the input
- * cell arrays.
+ * cell arrays. Field data TorsionColorRange holds -m and m, m the 95th
+ * percentile of |torsion| over the samples: a colour range centred on zero
+ * that a few noise spikes do not squash (the plugin colours by it in
+ * ParaView).
  * Interpolated lines whose points look noisy (a least squares keeps far
  * fewer knots than points) get one warning per run: their curvature and
  * torsion follow the noise, and Mode Approximate gives the curve's own. An

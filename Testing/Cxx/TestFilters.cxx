@@ -19,6 +19,7 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
@@ -1738,4 +1739,26 @@ TEST(CurvatureBound, ACuspIsNamedInAWarning)
       cusp ? 1 : 0)
       << Joined(run.Warnings);
   }
+}
+
+TEST(TorsionColorRange, CentredOnZeroAndNotSquashedBySpikes)
+{
+  const auto range = [](vtkPolyData* curve) {
+    vtkDataArray* values = curve->GetFieldData()->GetArray("TorsionColorRange");
+    EXPECT_NE(values, nullptr);
+    EXPECT_EQ(values ? values->GetNumberOfTuples() : 0, 2);
+    return values ? std::make_pair(values->GetTuple1(0), values->GetTuple1(1))
+                  : std::make_pair(0.0, 0.0);
+  };
+  // A helix: torsion 0.2 everywhere, so the 95th percentile is 0.2.
+  const FilterRun helix = RunCubic(ReadData("helix.vtp"));
+  const auto [low, high] = range(helix.Output);
+  EXPECT_EQ(low, -high);
+  EXPECT_NEAR(high, 0.2, 0.2 * 0.1); // the cubic at 8 points per turn, ends included
+  // The noisy aorta's cubic: spikes of 100-200, most samples far below.
+  const FilterRun aorta = RunCubic(ReadData("aorta-centerline.vtp"));
+  const double largest = MaxAbs(PointArray(aorta.Output, "Torsion"), DistinctIds(LinesOf(aorta.Output)[0]));
+  EXPECT_GT(largest, 100.0);
+  EXPECT_LT(range(aorta.Output).second, 0.2 * largest);
+  EXPECT_GT(range(aorta.Output).second, 0.0);
 }
