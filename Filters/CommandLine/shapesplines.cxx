@@ -16,6 +16,8 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkExecutive.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
@@ -29,8 +31,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -113,8 +117,9 @@ Common options:
   -q, --quiet            no summary and no progress bar
   -h, --help             this text
 
-Exit status: 0 on success, 1 on bad usage or unreadable input, 2 when the
-filter reported errors (lines skipped: see the messages).
+Exit status: 0 on success, 1 on bad usage, unreadable input or an output that
+cannot be written (checked before any work, and again when written), 2 when
+the filter reported errors (lines skipped: see the messages).
 )";
 
 struct UsageError : std::runtime_error
@@ -443,12 +448,47 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path)
   return data;
 }
 
+/// Why the last system call failed, in the system's words.
+std::string SystemError()
+{
+  return errno != 0 ? std::strerror(errno) : "unknown error";
+}
+
+/// Refuses an output that cannot be written before any work is done, so that a
+/// long fit does not end in "cannot write". A file made to find out is removed.
+void CheckWritable(const std::string& path)
+{
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+  {
+    throw std::runtime_error("cannot write " + path + ": it is a directory");
+  }
+  const std::string extension = Extension(path);
+  if (extension != ".csv" && extension != ".vtp")
+  {
+    throw UsageError("cannot write '" + extension + "' files (" + path + "): use .vtp or .csv");
+  }
+  const bool existed = std::filesystem::exists(path, error);
+  errno = 0;
+  std::ofstream probe(path, std::ios::app);
+  if (!probe)
+  {
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
+  }
+  probe.close();
+  if (!existed)
+  {
+    std::filesystem::remove(path, error);
+  }
+}
+
 void WriteCsv(vtkPolyData* data, const std::string& path)
 {
+  errno = 0;
   std::ofstream file(path);
   if (!file)
   {
-    throw std::runtime_error("cannot write " + path);
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
   }
   file.precision(17);
   std::vector<vtkDataArray*> arrays;
@@ -496,31 +536,34 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
       file << '\n';
     }
   }
+  // The last rows reach the disk only when the file is closed.
+  file.close();
   if (!file)
   {
-    throw std::runtime_error("error while writing " + path);
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
   }
 }
 
 void Write(vtkPolyData* data, const std::string& path)
 {
-  const std::string extension = Extension(path);
-  if (extension == ".csv")
+  if (Extension(path) == ".csv")
   {
     WriteCsv(data, path);
     return;
-  }
-  if (extension != ".vtp")
-  {
-    throw UsageError("cannot write '" + extension + "' files (" + path + "): use .vtp or .csv");
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
   writer->SetDataModeToBinary();
-  if (writer->Write() != 1)
+  // The writer's and its pipeline's messages would say in VTK's words what ours says.
+  vtkNew<vtkCallbackCommand> ignore;
+  writer->AddObserver(vtkCommand::ErrorEvent, ignore);
+  writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  errno = 0;
+  writer->Write();
+  if (writer->GetErrorCode() != vtkErrorCode::NoError)
   {
-    throw std::runtime_error("cannot write " + path);
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
   }
 }
 
@@ -790,6 +833,7 @@ int Fit(Arguments& args)
   }
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
+  CheckWritable(output);
 
   vtkSmartPointer<vtkPolyData> data = Read(input);
   if (data->GetNumberOfLines() == 0)
@@ -831,6 +875,10 @@ int Audit(Arguments& args)
   analysis->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
+  if (!output.empty())
+  {
+    CheckWritable(output);
+  }
 
   analysis->SetInputData(0, Read(args.Positional[0]));
   if (args.Positional.size() == 2)

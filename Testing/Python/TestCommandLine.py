@@ -261,6 +261,36 @@ code, out, err = run("audit", os.path.join(args.data, "helix.vtp"), os.path.join
 check(code == 1 and "has no point array SpanIndex" in err and "shapesplines fit" in err,
       "audit: a data file given as CURVE is refused with a message (exit 1)", "exit %d, %r" % (code, err.strip()))
 
+# ---------------------------------------------------------------------------- writes
+# Every output that cannot be written is an error, found before the work is done.
+helix_vtp = os.path.join(args.data, "helix.vtp")
+missing_dir = os.path.join(args.temp, "no-such-dir")
+for name in ("full.vtp", "full.csv"):
+    if os.path.lexists(temp(name)):
+        os.remove(temp(name))
+    os.symlink("/dev/full", temp(name))  # opens, then every write fails: a full disk
+write_cases = [
+    (("fit", helix_vtp, "-o", os.path.join(missing_dir, "x.vtp")), "No such file or directory"),
+    (("fit", helix_vtp, "-o", os.path.join(missing_dir, "x.csv")), "No such file or directory"),
+    (("audit", helix_vtp, "-o", os.path.join(missing_dir, "x.vtp")), "No such file or directory"),
+    (("fit", helix_vtp, "-o", args.temp), "it is a directory"),
+    (("fit", helix_vtp, "-o", temp("full.vtp")), "No space left on device"),
+    (("fit", helix_vtp, "-o", temp("full.csv")), "No space left on device"),
+    (("audit", helix_vtp, "-o", temp("full.csv")), "No space left on device"),
+]
+for words, reason in write_cases:
+    code, out, err = run(*words)
+    output = str(words[3])
+    check(code == 1 and "cannot write %s: %s" % (output, reason) in err and "wrote" not in out,
+          "a failed write is an error: %s ... -o %s" % (words[0], os.path.basename(output)),
+          "exit %d, %r, %r" % (code, err.strip(), out.strip()[-60:]))
+# The up-front check finds a missing directory before the fit: no summary either.
+code, out, err = run("fit", helix_vtp, "-o", os.path.join(missing_dir, "x.vtp"))
+check(out == "" and not os.path.exists(missing_dir), "an unwritable output is refused before the fit",
+      repr(out))
+code, out, err = run("fit", helix_vtp, "-o", temp("never.txt"))
+check(code == 1 and not os.path.exists(temp("never.txt")), "a refused output is never created")
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
