@@ -55,7 +55,7 @@ const char* const Usage = R"(shapesplines: shape-preserving spline curves with c
 Usage:
   shapesplines fit INPUT -o OUTPUT [options]
   shapesplines audit INPUT [CURVE] [-o OUTPUT] [--closed]
-  shapesplines --help
+  shapesplines --help | --version
 
 fit: one spline curve per polyline of INPUT, sampled with its exact Frenet frame,
 curvature and signed torsion, audited against the shape of the data (paper 001,
@@ -116,11 +116,15 @@ Common options:
   -o, --output OUTPUT    output file (required for fit)
   -q, --quiet            no summary and no progress bar
   -h, --help             this text
+  --version              the version of shapesplines
+Each option may be given once.
 
 Exit status: 0 on success, 1 on bad usage, unreadable input or an output that
 cannot be written (checked before any work, and again when written), 2 when
 the filter reported errors (lines skipped: see the messages).
 )";
+
+const char* const Version = "shapesplines " SHAPESPLINES_VERSION "\n";
 
 struct UsageError : std::runtime_error
 {
@@ -200,7 +204,8 @@ struct Arguments
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
   "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
-const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help",
+  "version" };
 
 Arguments Parse(int argc, char* argv[])
 {
@@ -215,6 +220,14 @@ Arguments Parse(int argc, char* argv[])
     else if (word == "-q")
     {
       word = "--quiet";
+    }
+    else if (word == "-h")
+    {
+      word = "--help";
+    }
+    if (word.size() > 1 && word[0] == '-' && word[1] != '-')
+    {
+      throw UsageError("unknown option " + word);
     }
     if (word.rfind("--", 0) != 0 || word.size() == 2)
     {
@@ -241,7 +254,14 @@ Arguments Parse(int argc, char* argv[])
       }
       value = argv[++i];
     }
-    args.Options[name] = value;
+    // A repeated option is a mistake whichever one was meant: -o a -o b.
+    const auto [previous, added] = args.Options.emplace(name, value);
+    if (!added)
+    {
+      throw UsageError("--" + name + " is given twice" +
+        (ValueOptions.count(name) ? " ('" + previous->second + "' and '" + value + "')" : "") +
+        ": give each option once");
+    }
   }
   return args;
 }
@@ -968,12 +988,22 @@ int main(int argc, char* argv[])
     std::cout << Usage;
     return 0;
   }
+  if (command == "--version")
+  {
+    std::cout << Version;
+    return 0;
+  }
   try
   {
     Arguments args = Parse(argc, argv);
     if (args.Flag("help"))
     {
       std::cout << Usage;
+      return 0;
+    }
+    if (args.Flag("version"))
+    {
+      std::cout << Version;
       return 0;
     }
     if (command == "fit")

@@ -291,6 +291,34 @@ check(out == "" and not os.path.exists(missing_dir), "an unwritable output is re
 code, out, err = run("fit", helix_vtp, "-o", temp("never.txt"))
 check(code == 1 and not os.path.exists(temp("never.txt")), "a refused output is never created")
 
+# ---------------------------------------------------------------------------- options
+# The version is the project's (CMakeLists.txt next to Data/).
+with open(os.path.join(args.data, os.pardir, "CMakeLists.txt")) as f:
+    project_version = re.search(r"project\(ShapeSplines VERSION ([0-9.]+)", f.read()).group(1)
+for words in (("--version",), ("fit", "--version")):
+    code, out, err = run(*words)
+    check(code == 0 and out == "shapesplines %s\n" % project_version and err == "",
+          "shapesplines %s prints the project version %s" % (" ".join(words), project_version), repr(out))
+check("--version" in run("--help")[1], "--help documents --version")
+# A repeated option is an error, whichever came first, and nothing is written.
+repeated = [
+    (("fit", helix_vtp, "-o", temp("rep-a.vtp"), "-o", temp("rep-b.vtp")),
+     "--output is given twice ('%s' and '%s')" % (temp("rep-a.vtp"), temp("rep-b.vtp"))),
+    (("fit", helix_vtp, "--output", temp("rep-a.vtp"), "-o", temp("rep-b.vtp")), "--output is given twice"),
+    (("fit", helix_vtp, "-o", temp("rep-a.vtp"), "--samples", "4", "--samples=8"),
+     "--samples is given twice ('4' and '8')"),
+    (("fit", helix_vtp, "-o", temp("rep-a.vtp"), "--closed", "--closed"), "--closed is given twice"),
+    (("audit", helix_vtp, "-q", "--quiet"), "--quiet is given twice"),
+]
+for words, message in repeated:
+    code, out, err = run(*words)
+    check(code == 1 and message in err and "give each option once" in err and out == ""
+          and not os.path.exists(temp("rep-a.vtp")) and not os.path.exists(temp("rep-b.vtp")),
+          "repeated option refused: %s" % message.split(" (")[0], "exit %d, %r" % (code, err.strip()))
+code, out, err = run("fit", helix_vtp, "-o", temp("x.vtp"), "-s", "4")
+check(code == 1 and "unknown option -s" in err, "an unknown short option is refused, not read as a file",
+      err.strip())
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
