@@ -658,6 +658,30 @@ double CellValue(vtkPolyData* data, const char* name, vtkIdType cell)
   return array ? array->GetComponent(cell, 0) : std::numeric_limits<double>::quiet_NaN();
 }
 
+/// "[min, max]" of the values at the ids the data define (all when defined is empty), or
+/// "undefined": the data's range, never widened to 0.
+std::string RangeText(vtkDataArray* array, const vtkIdType* ids, vtkIdType n,
+  const std::function<bool(vtkIdType)>& defined = {})
+{
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (!defined || defined(ids[k]))
+    {
+      lo = std::min(lo, array->GetComponent(ids[k], 0));
+      hi = std::max(hi, array->GetComponent(ids[k], 0));
+    }
+  }
+  if (!(lo <= hi))
+  {
+    return "undefined";
+  }
+  std::ostringstream text;
+  text << "[" << lo << ", " << hi << "]";
+  return text.str();
+}
+
 /// One line per output line: samples, length, curvature and torsion ranges, violations.
 void Summarize(vtkPolyData* curve)
 {
@@ -671,17 +695,13 @@ void Summarize(vtkPolyData* curve)
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     double maxCurvature = 0.0;
-    double minTorsion = 0.0;
-    double maxTorsion = 0.0;
     for (vtkIdType k = 0; k < n; ++k)
     {
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-      minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
-      maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
     }
     std::cout << "line " << line << ": " << n << " samples, length "
               << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
-              << ", torsion [" << minTorsion << ", " << maxTorsion << "], shape violations "
+              << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
               << CellValue(curve, "ShapeViolations", line) << "\n";
   }
 }
@@ -923,6 +943,11 @@ int Audit(Arguments& args)
     vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
     vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
     vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
+    // The segments at an open line's ends have no discrete torsion: 0 there, and
+    // not coplanar; a coplanar segment's 0 is the data's.
+    const auto definedTorsion = [&](vtkIdType id) {
+      return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
+    };
     auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
     vtkIdType line = 0;
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
@@ -936,21 +961,17 @@ int Audit(Arguments& args)
         continue;
       }
       double maxCurvature = 0.0;
-      double minTorsion = 0.0;
-      double maxTorsion = 0.0;
       int collinearCount = 0;
       int coplanarCount = 0;
       for (vtkIdType k = 0; k < n; ++k)
       {
         maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-        minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
-        maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
         collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
         coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
       }
       std::cout << "line " << line << ": " << n << " points, max discrete curvature "
-                << maxCurvature << ", discrete torsion [" << minTorsion << ", " << maxTorsion
-                << "], " << collinearCount << " collinear points, " << coplanarCount
+                << maxCurvature << ", discrete torsion "
+                << RangeText(torsion, ids, n, definedTorsion) << ", " << collinearCount << " collinear points, " << coplanarCount
                 << " coplanar segments";
       if (args.Positional.size() == 2)
       {

@@ -319,6 +319,28 @@ code, out, err = run("fit", helix_vtp, "-o", temp("x.vtp"), "-s", "4")
 check(code == 1 and "unknown option -s" in err, "an unknown short option is refused, not read as a file",
       err.strip())
 
+# ---------------------------------------------------------------------------- ranges
+# The summary's torsion range is the data's: a helix's never reaches 0.
+def printed_range(text, name):
+    found = re.search(name + r" \[([^,\]]+), ([^\]]+)\]", text)
+    return (float(found.group(1)), float(found.group(2))) if found else (float("nan"), float("nan"))
+
+
+code, out, err = run("fit", helix_csv, "-o", temp("helix-range.csv"), "--samples", 4)
+torsion = read_csv(temp("helix-range.csv"))["Torsion"]
+lo, hi = printed_range(out, "torsion")
+check(code == 0 and 0.15 < lo and math.isclose(lo, torsion.min(), rel_tol=1e-5)
+      and math.isclose(hi, torsion.max(), rel_tol=1e-5),
+      "fit: the torsion range printed is the curve's (min..max), not widened to 0",
+      "printed [%g, %g], data [%g, %g]" % (lo, hi, torsion.min(), torsion.max()))
+code, out, err = run("audit", helix_csv)
+lo, hi = printed_range(out, "discrete torsion")
+check(code == 0 and lo > 0.15 and math.isclose(lo, hi, rel_tol=1e-9),
+      "audit: a regular helix's discrete torsion range, without the undefined ends' 0", out.strip())
+code, out, err = run("audit", os.path.join(args.data, "akima.vtp"))
+check(code == 0 and printed_range(out, "discrete torsion") == (0.0, 0.0),
+      "audit: planar data's discrete torsion is [0, 0], the data's own", out.strip())
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
