@@ -65,13 +65,26 @@ coplanar runs) and, given a CURVE fitted to them by `fit`, where it breaks that
 shape.
 
 Files: INPUT and CURVE are .vtp, legacy .vtk or .csv; OUTPUT is .vtp or .csv.
-CSV input: columns x,y,z and an optional fourth column line_id; consecutive
-rows with the same line_id form a polyline, without it the whole file is one
-polyline; # starts a comment. An optional header row names the columns x, y, z,
-line_id and any others, which become point arrays (name_0, name_1, ... are
-the components of one array): a CSV written by fit reads back whole.
-CSV output: a row per sample, line_id then x,y,z then every point array.
 OUTPUT is never INPUT.
+CSV input: a row per point; # starts a comment, blank rows are skipped. A first
+row whose first field is not a number is a header naming the columns: x, y, z,
+the line ids and any others, which become point arrays (name_0, name_1, ... in
+adjacent columns are the components of one array); names are compared without
+case and may not repeat. The line ids are in the column --line-column names,
+else in the one named line_id, line, lineid, id, cell, cell_id, track or
+streamline (line_id before the others; two others are an error). Consecutive
+rows with the same id form a polyline, kept with its id (cell array LineId);
+the rows of a line are consecutive; without line ids the file is one polyline.
+Without a header a CSV has 3 columns (x,y,z) or 4 (x,y,z,line_id). Every row
+has as many fields as the header (or the first row). A column taken for line
+ids by its name or place that gives every row a line of its own is refused.
+CSV dialect: UTF-8 (a byte order mark is skipped) or ASCII, LF or CRLF line
+ends; the separator is a tab if the first row has one, else ';' if it has one,
+else ','; a field may be in double quotes, and may then hold the separator and
+#, with "" for a quote; blanks around a field are ignored; numbers have a
+decimal point, not a comma.
+CSV output: a row per sample, line_id (the input's, else the line's place)
+then x,y,z then every point array: a CSV written by fit reads back whole.
 
 Options of fit:
   --family NAME          spline family (default cubic):
@@ -114,6 +127,7 @@ Options of fit:
   --curve-tolerance E    shape tolerance epsilon_2 on the curve (default 1e-3)
 Common options:
   -o, --output OUTPUT    output file (required for fit)
+  --line-column NAME     CSV INPUT: the column of line ids (see above)
   -q, --quiet            no summary and no progress bar
   -h, --help             this text
   --version              the version of shapesplines
@@ -203,7 +217,8 @@ struct Arguments
 
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
-  "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
+  "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length",
+  "data-tolerance", "curve-tolerance", "line-column" };
 const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help",
   "version" };
 
@@ -268,18 +283,91 @@ Arguments Parse(int argc, char* argv[])
 
 // --------------------------------------------------------------------------- files
 
-/// Splits a CSV row on commas (and surrounding blanks).
-std::vector<std::string> Fields(const std::string& row)
+/// Column names that hold line ids, compared without case (--line-column names another).
+const std::vector<std::string> LineIdNames = { "line_id", "line", "lineid", "id", "cell",
+  "cell_id", "track", "streamline" };
+
+std::string Trim(const std::string& text)
+{
+  const size_t first = text.find_first_not_of(" \t\r");
+  const size_t last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+std::string Join(const std::vector<std::string>& names)
+{
+  std::string text;
+  for (const std::string& name : names)
+  {
+    text += (text.empty() ? "" : ", ") + name;
+  }
+  return text;
+}
+
+/// A CSV's separator, from its first row: a tab if the row has one outside double
+/// quotes, else ';' if it has one, else ','.
+char Separator(const std::string& row)
+{
+  bool quoted = false;
+  bool semicolon = false;
+  for (const char c : row)
+  {
+    if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (!quoted && c == '#')
+    {
+      break;
+    }
+    else if (!quoted && c == '\t')
+    {
+      return '\t';
+    }
+    semicolon = semicolon || (!quoted && c == ';');
+  }
+  return semicolon ? ';' : ',';
+}
+
+/// Splits a CSV row into fields, up to a # outside double quotes (a comment). A
+/// double-quoted field may hold the separator and #, and "" for a quote; blanks
+/// around a field are dropped.
+std::vector<std::string> Fields(const std::string& row, char separator, const std::string& where)
 {
   std::vector<std::string> fields;
-  std::stringstream stream(row);
   std::string field;
-  while (std::getline(stream, field, ','))
+  bool quoted = false;
+  for (size_t i = 0; i < row.size(); ++i)
   {
-    const size_t first = field.find_first_not_of(" \t\r");
-    const size_t last = field.find_last_not_of(" \t\r");
-    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+    const char c = row[i];
+    if (quoted && c == '"' && i + 1 < row.size() && row[i + 1] == '"')
+    {
+      field += '"';
+      ++i;
+    }
+    else if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (!quoted && c == separator)
+    {
+      fields.push_back(Trim(field));
+      field.clear();
+    }
+    else if (!quoted && c == '#')
+    {
+      break;
+    }
+    else
+    {
+      field += c;
+    }
   }
+  if (quoted)
+  {
+    throw std::runtime_error(where + "a double quote is not closed (a field cannot span rows)");
+  }
+  fields.push_back(Trim(field));
   return fields;
 }
 
@@ -297,128 +385,260 @@ bool ParseNumber(const std::string& text, double& value)
   return end == text.size();
 }
 
-/// The columns of a CSV header: x, y, z, line_id, and point arrays (name or name_0, name_1, ...).
+/// What the columns of a CSV hold: x, y, z, line ids and point arrays (name or
+/// name_0, name_1, ... for the components of one array).
 struct CsvColumns
 {
-  std::array<int, 4> Position = { 0, 1, 2, 3 }; ///< x, y, z, line_id; -1 if absent
-  std::vector<std::pair<vtkSmartPointer<vtkDoubleArray>, int>> Arrays; ///< and first column
+  std::vector<std::string> Names;            ///< x, y, z[, line_id] without a header
+  bool Header = false;
+  std::array<size_t, 3> Position = { 0, 1, 2 }; ///< of x, y and z
+  int LineId = -1;                           ///< the column of line ids, -1 if none
+  bool LineIdGuessed = false;                ///< by its name or place, not --line-column
+  std::vector<std::pair<vtkSmartPointer<vtkDoubleArray>, size_t>> Arrays; ///< and first column
 };
 
-CsvColumns HeaderColumns(const std::vector<std::string>& fields)
+CsvColumns HeaderColumns(
+  const std::vector<std::string>& names, const std::string& lineColumn, const std::string& where)
 {
   CsvColumns columns;
-  columns.Position = { -1, -1, -1, -1 };
-  const std::vector<std::string> names = { "x", "y", "z", "line_id" };
-  for (size_t f = 0; f < fields.size(); ++f)
+  columns.Names = names;
+  columns.Header = true;
+  std::array<int, 3> axes = { -1, -1, -1 };
+  std::vector<size_t> lineIdColumns;
+  std::map<std::string, size_t> seen;
+  for (size_t f = 0; f < names.size(); ++f)
   {
-    const auto name = std::find(names.begin(), names.end(), Lower(fields[f]));
-    if (name != names.end())
+    const std::string name = Lower(names[f]);
+    if (name.empty())
     {
-      columns.Position[name - names.begin()] = static_cast<int>(f);
+      throw std::runtime_error(where + "column " + std::to_string(f + 1) + " of the header has no name");
+    }
+    const auto [previous, added] = seen.emplace(name, f);
+    if (!added)
+    {
+      throw std::runtime_error(where + "the header names '" + names[f] + "' twice (columns " +
+        std::to_string(previous->second + 1) + " and " + std::to_string(f + 1) +
+        "; names are compared without case)");
+    }
+    if (name == "x" || name == "y" || name == "z")
+    {
+      axes[name[0] - 'x'] = static_cast<int>(f);
+    }
+    else if (lineColumn.empty()
+        ? std::count(LineIdNames.begin(), LineIdNames.end(), name) > 0
+        : name == Lower(lineColumn))
+    {
+      lineIdColumns.push_back(f);
+    }
+  }
+  if (std::count(axes.begin(), axes.end(), -1) > 0)
+  {
+    throw std::runtime_error(
+      where + "the header must name the columns x, y and z; it names " + Join(names));
+  }
+  if (!lineColumn.empty() && lineIdColumns.empty())
+  {
+    throw std::runtime_error(where + "no column is named '" + lineColumn +
+      "' (--line-column); the header names " + Join(names));
+  }
+  // line_id, the name fit writes, before the others: a curve's CSV always reads back.
+  const auto canonical = std::find_if(lineIdColumns.begin(), lineIdColumns.end(),
+    [&](size_t f) { return Lower(names[f]) == LineIdNames[0]; });
+  if (canonical != lineIdColumns.end())
+  {
+    lineIdColumns = { *canonical };
+  }
+  if (lineIdColumns.size() > 1)
+  {
+    throw std::runtime_error(where + "the columns '" + names[lineIdColumns[0]] + "' and '" +
+      names[lineIdColumns[1]] + "' both name line ids: choose one with --line-column");
+  }
+  std::copy(axes.begin(), axes.end(), columns.Position.begin());
+  columns.LineId = lineIdColumns.empty() ? -1 : static_cast<int>(lineIdColumns[0]);
+  columns.LineIdGuessed = lineColumn.empty();
+  for (size_t f = 0; f < names.size(); ++f)
+  {
+    if (std::count(axes.begin(), axes.end(), static_cast<int>(f)) > 0 ||
+      static_cast<int>(f) == columns.LineId)
+    {
       continue;
     }
-    // name_0, name_1, ... are the components of one array.
-    const size_t underscore = fields[f].rfind('_');
-    const std::string base = underscore == std::string::npos ? "" : fields[f].substr(0, underscore);
+    // name_0, name_1, ... in adjacent columns are the components of one array.
+    const size_t underscore = names[f].rfind('_');
+    const std::string base = underscore == std::string::npos ? "" : names[f].substr(0, underscore);
     const std::string component =
-      underscore == std::string::npos ? "" : fields[f].substr(underscore + 1);
-    if (!columns.Arrays.empty() && !base.empty() &&
-      base == columns.Arrays.back().first->GetName() &&
-      component == std::to_string(columns.Arrays.back().first->GetNumberOfComponents()))
+      underscore == std::string::npos ? "" : names[f].substr(underscore + 1);
+    if (!columns.Arrays.empty() && !base.empty())
     {
-      auto& array = columns.Arrays.back().first;
-      array->SetNumberOfComponents(array->GetNumberOfComponents() + 1);
-      continue;
+      auto& [array, start] = columns.Arrays.back();
+      const int components = array->GetNumberOfComponents();
+      if (base == array->GetName() && component == std::to_string(components) &&
+        f == start + components)
+      {
+        array->SetNumberOfComponents(components + 1);
+        continue;
+      }
     }
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetName(component == "0" ? base.c_str() : fields[f].c_str());
-    columns.Arrays.emplace_back(array, static_cast<int>(f));
+    array->SetName(component == "0" ? base.c_str() : names[f].c_str());
+    columns.Arrays.emplace_back(array, f);
   }
   return columns;
 }
 
-vtkSmartPointer<vtkPolyData> ReadCsv(const std::string& path)
+/// Without a header a CSV holds x,y,z or x,y,z,line_id: anything else needs names.
+CsvColumns HeaderlessColumns(size_t count, const std::string& lineColumn, const std::string& where)
 {
-  std::ifstream file(path);
-  if (!file)
+  if (!lineColumn.empty())
   {
-    throw std::runtime_error("cannot open " + path);
+    throw std::runtime_error(where + "--line-column " + lineColumn +
+      " needs a header row naming the columns, and this CSV has none");
+  }
+  if (count != 3 && count != 4)
+  {
+    throw std::runtime_error(where + "this row has " + std::to_string(count) +
+      " fields, and without a header a CSV has 3 (x,y,z) or 4 (x,y,z,line_id): add a header "
+      "row naming the columns, e.g. x,y,z,line_id,radius (names other than x, y, z and the "
+      "line id become point arrays)");
   }
   CsvColumns columns;
+  columns.Names = { "x", "y", "z" };
+  if (count == 4)
+  {
+    columns.Names.emplace_back("line_id");
+    columns.LineId = 3;
+    columns.LineIdGuessed = true;
+  }
+  return columns;
+}
+
+vtkSmartPointer<vtkPolyData> ReadCsv(
+  std::istream& file, const std::string& name, const std::string& lineColumn)
+{
+  CsvColumns columns;
+  char separator = ',';
+  bool first = true;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
+  vtkNew<vtkDoubleArray> lineIds;
+  lineIds->SetName("LineId");
+  std::set<double> endedLines;
   std::vector<vtkIdType> current;
-  double currentLine = std::numeric_limits<double>::quiet_NaN();
-  bool hasLineIds = false;
-  bool first = true;
   std::string row;
   std::vector<double> tuple;
   for (int number = 1; std::getline(file, row); ++number)
   {
-    const std::string content = row.substr(0, row.find('#'));
-    if (content.find_first_not_of(" \t\r") == std::string::npos)
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
     {
-      continue;
+      throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
     }
-    const std::vector<std::string> fields = Fields(content);
-    const std::string where = path + ":" + std::to_string(number) + ": ";
-    double value;
-    if (first && !ParseNumber(fields[0], value))
+    if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
     {
-      columns = HeaderColumns(fields);
-      if (columns.Position[0] < 0 || columns.Position[1] < 0 || columns.Position[2] < 0)
-      {
-        throw std::runtime_error(where + "the header must name the columns x, y and z");
-      }
-      hasLineIds = columns.Position[3] >= 0;
-      first = false;
-      continue;
+      row.erase(0, 3); // the UTF-8 byte order mark some editors write
+    }
+    if (!row.empty() && row.back() == '\r')
+    {
+      row.pop_back();
     }
     if (first)
     {
-      hasLineIds = fields.size() >= 4;
-      first = false;
+      separator = Separator(row);
     }
-    double xyzl[4] = { 0, 0, 0, 0 };
-    for (int c = 0; c < (hasLineIds ? 4 : 3); ++c)
+    const std::vector<std::string> fields = Fields(row, separator, where);
+    if (fields.size() == 1 && fields[0].empty())
     {
-      const int column = columns.Position[c];
-      if (column >= static_cast<int>(fields.size()) || !ParseNumber(fields[column], xyzl[c]))
-      {
-        throw std::runtime_error(where + "expected numbers x,y,z" +
-          (hasLineIds ? ",line_id" : "") + ", got '" + content + "'");
-      }
+      continue;
     }
+    double value;
+    if (first)
+    {
+      first = false;
+      if (!ParseNumber(fields[0], value))
+      {
+        columns = HeaderColumns(fields, lineColumn, where);
+        continue;
+      }
+      columns = HeaderlessColumns(fields.size(), lineColumn, where);
+    }
+    if (fields.size() != columns.Names.size())
+    {
+      throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
+        " fields, " + (columns.Header ? "the header names " : "the first row has ") +
+        std::to_string(columns.Names.size()));
+    }
+    const auto numberAt = [&](size_t column) {
+      double parsed;
+      if (!ParseNumber(fields[column], parsed))
+      {
+        const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
+        throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
+          columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
+          (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
+      }
+      return parsed;
+    };
+    const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
+      numberAt(columns.Position[2]) };
     for (auto& [array, column] : columns.Arrays)
     {
       tuple.resize(array->GetNumberOfComponents());
       for (size_t c = 0; c < tuple.size(); ++c)
       {
-        const size_t at = column + c;
-        if (at >= fields.size() || !ParseNumber(fields[at], tuple[c]))
-        {
-          throw std::runtime_error(where + "expected a number in column " +
-            std::to_string(at + 1) + " (" + array->GetName() + "), got '" + content + "'");
-        }
+        tuple[c] = numberAt(column + c);
       }
       array->InsertNextTuple(tuple.data());
     }
-    if (!current.empty() && hasLineIds && xyzl[3] != currentLine)
+    if (columns.LineId >= 0)
     {
-      lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
-      current.clear();
+      const double id = numberAt(columns.LineId);
+      const vtkIdType lineCount = lineIds->GetNumberOfTuples();
+      if (!current.empty() && id != lineIds->GetValue(lineCount - 1))
+      {
+        lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
+        endedLines.insert(lineIds->GetValue(lineCount - 1));
+        current.clear();
+      }
+      if (current.empty())
+      {
+        if (!std::isfinite(id) || endedLines.count(id))
+        {
+          throw std::runtime_error(where + "line id " + fields[columns.LineId] +
+            (std::isfinite(id) ? " again, after other lines: the rows of a line must be consecutive"
+                               : ": line ids must be finite numbers"));
+        }
+        lineIds->InsertNextValue(id);
+      }
     }
-    currentLine = xyzl[3];
-    current.push_back(points->InsertNextPoint(xyzl));
+    current.push_back(points->InsertNextPoint(xyz));
   }
   if (!current.empty())
   {
     lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
   }
+  const vtkIdType rows = points->GetNumberOfPoints();
+  // A column taken for line ids by its name or place that gives every row its own
+  // line numbers points or times, not lines: nothing could be fitted.
+  if (columns.LineIdGuessed && rows > 1 && lines->GetNumberOfCells() == rows)
+  {
+    const std::string column = columns.Names[columns.LineId];
+    throw std::runtime_error(name + ": " +
+      (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
+      ", read as line ids, gives each of its " + std::to_string(rows) +
+      " rows a line of its own: " +
+      (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
+                        "arrays), or name the line id column with --line-column"
+                      : "if it is not a line id, add a header row naming the columns, e.g. "
+                        "x,y,z,time"));
+  }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
   data->SetLines(lines);
+  if (columns.LineId >= 0)
+  {
+    data->GetCellData()->AddArray(lineIds);
+  }
   for (const auto& column : columns.Arrays)
   {
     data->GetPointData()->AddArray(column.first);
@@ -426,19 +646,29 @@ vtkSmartPointer<vtkPolyData> ReadCsv(const std::string& path)
   return data;
 }
 
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+/// Reads a .vtp, legacy .vtk or .csv file; lineColumn names a CSV's line id column.
+vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& lineColumn = "")
 {
   if (!std::filesystem::is_regular_file(path))
   {
     throw std::runtime_error("no such file: " + path);
   }
   const std::string extension = Extension(path);
-  if (extension == ".csv")
+  if (!lineColumn.empty() && extension != ".csv")
   {
-    return ReadCsv(path);
+    throw UsageError("--line-column names a column of a CSV INPUT, and " + path + " is not one");
   }
   vtkSmartPointer<vtkPolyData> data;
-  if (extension == ".vtp")
+  if (extension == ".csv")
+  {
+    std::ifstream file(path);
+    if (!file)
+    {
+      throw std::runtime_error("cannot open " + path);
+    }
+    data = ReadCsv(file, path, lineColumn);
+  }
+  else if (extension == ".vtp")
   {
     vtkNew<vtkXMLPolyDataReader> reader;
     reader->SetFileName(path.c_str());
@@ -502,6 +732,29 @@ void CheckWritable(const std::string& path)
   }
 }
 
+/// A name as a CSV field: double-quoted when it holds a separator, a quote or #.
+std::string CsvField(const std::string& name)
+{
+  if (name.find_first_of(",;\t\"#") == std::string::npos)
+  {
+    return name;
+  }
+  std::string quoted = "\"";
+  for (const char c : name)
+  {
+    quoted += c == '"' ? "\"\"" : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+
+/// A line's id: its LineId (from the input), else its place among the lines.
+double LineIdOf(vtkPolyData* data, vtkIdType line)
+{
+  vtkDataArray* ids = data->GetCellData()->GetArray("LineId");
+  // Cell ids count the vertices first.
+  return ids ? ids->GetComponent(data->GetNumberOfVerts() + line, 0) : static_cast<double>(line);
+}
+
 void WriteCsv(vtkPolyData* data, const std::string& path)
 {
   errno = 0;
@@ -525,7 +778,7 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
     const int components = array->GetNumberOfComponents();
     for (int c = 0; c < components; ++c)
     {
-      file << ',' << array->GetName() << (components > 1 ? "_" + std::to_string(c) : "");
+      file << ',' << CsvField(array->GetName() + (components > 1 ? "_" + std::to_string(c) : ""));
     }
   }
   file << '\n';
@@ -545,7 +798,7 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
     {
       double p[3];
       data->GetPoint(ids[k], p);
-      file << line << ',' << p[0] << ',' << p[1] << ',' << p[2];
+      file << LineIdOf(data, line) << ',' << p[0] << ',' << p[1] << ',' << p[2];
       for (vtkDataArray* array : arrays)
       {
         for (int c = 0; c < array->GetNumberOfComponents(); ++c)
@@ -652,6 +905,15 @@ void ShowProgress(vtkAlgorithm* algorithm)
   algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
 }
 
+/// How the summaries name a line: by its id (see LineIdOf), "line 5".
+std::string LineName(vtkPolyData* data, vtkIdType line)
+{
+  std::ostringstream text;
+  text.precision(17);
+  text << "line " << LineIdOf(data, line);
+  return text.str();
+}
+
 double CellValue(vtkPolyData* data, const char* name, vtkIdType cell)
 {
   vtkDataArray* array = data->GetCellData()->GetArray(name);
@@ -699,7 +961,7 @@ void Summarize(vtkPolyData* curve)
     {
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
     }
-    std::cout << "line " << line << ": " << n << " samples, length "
+    std::cout << LineName(curve, line) << ": " << n << " samples, length "
               << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
               << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
               << CellValue(curve, "ShapeViolations", line) << "\n";
@@ -871,11 +1133,12 @@ int Fit(Arguments& args)
   {
     filter->SetNumberOfSubdivisions(static_cast<int>(args.Number("samples", 10, 1, 100000)));
   }
+  const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
   CheckWritable(output);
 
-  vtkSmartPointer<vtkPolyData> data = Read(input);
+  vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
   if (data->GetNumberOfLines() == 0)
   {
     throw std::runtime_error(input + " has no lines (polyline cells) to fit");
@@ -913,6 +1176,7 @@ int Audit(Arguments& args)
   analysis->SetClosed(args.Flag("closed"));
   analysis->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
   analysis->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
   if (!output.empty())
@@ -920,7 +1184,7 @@ int Audit(Arguments& args)
     CheckWritable(output);
   }
 
-  analysis->SetInputData(0, Read(args.Positional[0]));
+  analysis->SetInputData(0, Read(args.Positional[0], lineColumn));
   if (args.Positional.size() == 2)
   {
     vtkSmartPointer<vtkPolyData> curve = Read(args.Positional[1]);
@@ -957,7 +1221,7 @@ int Audit(Arguments& args)
       it->GetCurrentCell(n, ids);
       if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= result->GetNumberOfPoints(); }))
       {
-        std::cout << "line " << line << ": skipped (a point id out of range)\n";
+        std::cout << LineName(result, line) << ": skipped (a point id out of range)\n";
         continue;
       }
       double maxCurvature = 0.0;
@@ -969,7 +1233,7 @@ int Audit(Arguments& args)
         collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
         coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
       }
-      std::cout << "line " << line << ": " << n << " points, max discrete curvature "
+      std::cout << LineName(result, line) << ": " << n << " points, max discrete curvature "
                 << maxCurvature << ", discrete torsion "
                 << RangeText(torsion, ids, n, definedTorsion) << ", " << collinearCount << " collinear points, " << coplanarCount
                 << " coplanar segments";

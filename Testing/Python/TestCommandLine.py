@@ -124,9 +124,11 @@ for ext in ("csv", "vtk"):
     code, out, err = run("fit", temp("two." + ext), "-o", temp("two-%s.csv" % ext), "-q")
     outputs[ext] = read_csv(temp("two-%s.csv" % ext))
     check(code == 0 and out == "" and err == "", "fit two.%s -q: silent and successful" % ext, err)
-same = all(np.array_equal(outputs["csv"][k], outputs["vtk"][k]) for k in outputs["csv"])
-ids = outputs["csv"]["line_id"]
-check(same and set(ids) == {0, 1}, "CSV with line_id and legacy .vtk give the same two curves")
+same = all(np.array_equal(outputs["csv"][k], outputs["vtk"][k]) for k in outputs["csv"] if k != "line_id")
+# The CSV's line ids (7, 8) are kept; the .vtk's lines have none: their places.
+check(same and list(np.unique(outputs["csv"]["line_id"])) == [7, 8]
+      and list(np.unique(outputs["vtk"]["line_id"])) == [0, 1],
+      "CSV with line_id and legacy .vtk give the same two curves, each with its line ids")
 
 code, out, err = run("fit", os.path.join(args.data, "aorta-centerline.vtp"), "-o", temp("aorta.vtp"),
                      "--family", "cubic", "--end-condition", "natural", "--arc-length", "0.5",
@@ -340,6 +342,144 @@ check(code == 0 and lo > 0.15 and math.isclose(lo, hi, rel_tol=1e-9),
 code, out, err = run("audit", os.path.join(args.data, "akima.vtp"))
 check(code == 0 and printed_range(out, "discrete torsion") == (0.0, 0.0),
       "audit: planar data's discrete torsion is [0, 0], the data's own", out.strip())
+
+# ---------------------------------------------------------------------------- CSV line ids
+# Two helices 10 apart (2 turns each, 41 points): lines 5 and 7 of length 4 pi sqrt(5) = 28.1.
+pair_a = helix(20, 2)
+pair_b = pair_a + [10.0, 0.0, 0.0]
+pair_length = 4 * math.pi * math.sqrt(5.0)
+pair_rows = [(p, 5) for p in pair_a] + [(p, 7) for p in pair_b]
+
+
+def write_text(name, text, encoding="utf-8", newline="\n"):
+    with open(temp(name), "w", encoding=encoding, newline=newline) as f:
+        f.write(text)
+    return temp(name)
+
+
+def pair_csv(name, header, row, separator=",", newline="\n", bom=""):
+    """The pair of helices with header (None: none) and row(x, y, z, id) giving the fields."""
+    rows = ([header] if header is not None else []) + [
+        separator.join(row(*(repr(float(c)) for c in p), str(k))) for p, k in pair_rows]
+    return write_text(name, bom + "\n".join(rows) + "\n", newline=newline)
+
+
+def summary_lines(text):
+    """{line name: (samples, length)} from fit's summary."""
+    return {m.group(1): (int(m.group(2)), float(m.group(3)))
+            for m in re.finditer(r"^line ([^:]+): (\d+) samples, length ([^,]+),", text, re.M)}
+
+
+def check_pair(what, code, out, err, output_csv, ids=("5", "7")):
+    lines = summary_lines(out)
+    written = read_csv(output_csv) if code == 0 else {"line_id": np.array([])}
+    ok = (code == 0 and sorted(lines) == sorted(ids)
+          and all(abs(length - pair_length) < 1e-3 * pair_length for _, length in lines.values())
+          and list(np.unique(written["line_id"])) == [float(i) for i in ids])
+    check(ok, what, "exit %d, %s, %r" % (code, lines, err.strip()[:200]))
+
+
+xyz_id = lambda x, y, z, k: (x, y, z, k)
+id_xyz = lambda x, y, z, k: (k, x, y, z)
+# Only a line id column's meaning was wrong before: two helices read as one line of 74.6.
+for header, row in (("x,y,z,id", xyz_id), ("id,x,y,z", id_xyz)):
+    path = pair_csv("pair-%s.csv" % header.replace(",", ""), header, row)
+    code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
+    check_pair("CSV header %s: two lines 5 and 7 of length %.2f each" % (header, pair_length),
+               code, out, err, temp("pair-out.csv"))
+for name in ("line_id", "LINE", "lineid", "Cell", "cell_id", "track", "streamline"):
+    path = pair_csv("pair-alias.csv", "x,y,z," + name, xyz_id)
+    code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
+    check_pair("a line id column named %s" % name, code, out, err, temp("pair-out.csv"))
+# Without a header: x,y,z,line_id.
+path = pair_csv("pair-headerless.csv", None, xyz_id)
+code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
+check_pair("CSV without a header, 4 columns: x,y,z,line_id", code, out, err, temp("pair-out.csv"))
+# The ids reach the .vtp as the cell array LineId: read back by audit, which names
+# its lines and writes its line_id column from it.
+path = pair_csv("pair-ids.csv", "x,y,z,id", xyz_id)
+code, out, err = run("fit", path, "-o", temp("pair-curve.vtp"), "-q")
+code2, out2, err2 = run("audit", temp("pair-curve.vtp"), "-o", temp("pair-curve-shape.csv"))
+written = read_csv(temp("pair-curve-shape.csv")) if code2 == 0 else {"line_id": np.array([])}
+check(code == 0 and code2 == 0 and list(np.unique(written["line_id"])) == [5.0, 7.0]
+      and out2.startswith("line 5: ") and "\nline 7: " in out2,
+      "the .vtp curve keeps the input's ids as cell array LineId (5 and 7, not 0 and 1)",
+      "exit %d/%d, %r" % (code, code2, out2.strip()[:120]))
+# --line-column names any column; the other columns become point arrays.
+path = pair_csv("pair-named.csv", "x,y,z,Curve,id", lambda x, y, z, k: (x, y, z, k, "1"))
+code, out, err = run("fit", path, "-o", temp("pair-out.csv"), "--line-column", "curve")
+check_pair("--line-column curve (any case), while 'id' becomes a point array", code, out, err,
+           temp("pair-out.csv"))
+check(code == 0 and np.all(read_csv(temp("pair-out.csv"))["id"] == 1), "the id column is carried as a point array")
+time_rows = "".join("%r,%r,%r,%r\n" % (p[0], p[1], p[2], 0.5 * k) for k, p in enumerate(pair_a))
+line_id_errors = [
+    # A headerless fourth column that gives every row its own line is not a line id.
+    (write_text("time.csv", time_rows), (),
+     "column 4 of a CSV without a header, read as line ids, gives each of its 41 rows a line of its own: "
+     "if it is not a line id, add a header row naming the columns, e.g. x,y,z,time"),
+    (write_text("five.csv", "0,0,0,1,2\n1,0,0,1,2\n"), (),
+     "five.csv:1: this row has 5 fields, and without a header a CSV has 3 (x,y,z) or 4 (x,y,z,line_id): "
+     "add a header row naming the columns"),
+    (write_text("pointid.csv", "id,x,y,z\n" + "".join("%d,%r,%r,%r\n" % ((k,) + tuple(p)) for k, p in enumerate(pair_a))),
+     (), "the column 'id', read as line ids, gives each of its 41 rows a line of its own: if it numbers points"),
+    (write_text("twoids.csv", "x,y,z,id,track\n0,0,0,1,1\n"), (),
+     "the columns 'id' and 'track' both name line ids: choose one with --line-column"),
+    (write_text("again.csv", "x,y,z,line\n0,0,0,1\n1,0,0,1\n0,1,0,2\n1,1,0,2\n2,0,0,1\n"), (),
+     "again.csv:6: line id 1 again, after other lines: the rows of a line must be consecutive"),
+    (pair_csv("pair-ids.csv", "x,y,z,id", xyz_id), ("--line-column", "track"),
+     "no column is named 'track' (--line-column); the header names x, y, z, id"),
+    (write_text("time.csv", time_rows), ("--line-column", "time"),
+     "--line-column time needs a header row naming the columns, and this CSV has none"),
+    (helix_vtp, ("--line-column", "id"), "--line-column names a column of a CSV INPUT"),
+]
+for path, options, message in line_id_errors:
+    code, out, err = run("fit", path, "-o", temp("x.csv"), *options)
+    check(code == 1 and message in err and out == "",
+          "line ids: %s %s refused" % (os.path.basename(path), " ".join(options)), "exit %d, %r" % (code, err.strip()))
+# A CSV written by fit reads back with its ids even where it carries an 'id' array too.
+write_text("ids-and-line-id.csv", "x,y,z,ID,line_id\n0,0,0,4,5\n1,0,0,4,5\n2,1,0,4,6\n3,1,1,4,6\n")
+code, out, err = run("fit", temp("ids-and-line-id.csv"), "-o", temp("x.csv"))
+check(code == 0 and sorted(summary_lines(out)) == ["5", "6"], "line_id wins over the other names",
+      "exit %d, %r" % (code, err.strip()))
+
+# ---------------------------------------------------------------------------- CSV dialects
+# What spreadsheets write: a UTF-8 byte order mark, ';', quoted names, CRLF.
+path = pair_csv("excel.csv", '"X";"Y";"Z";"Track"', xyz_id, separator=";", newline="\r\n", bom="\ufeff")
+code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
+check_pair("UTF-8 BOM, ';' separators, quoted header, CRLF line ends", code, out, err, temp("pair-out.csv"))
+path = pair_csv("tabs.csv", "x\ty\tz\tline_id", lambda x, y, z, k: ('"%s"' % x, y, z, k), separator="\t")
+code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
+check_pair("tab separators, a quoted number", code, out, err, temp("pair-out.csv"))
+# A quoted name may hold the separator; fit's CSV quotes it again and reads back.
+write_text("quoted.csv", 'x,y,z,"wall, inner"\n0,0,0,1\n1,0,0,2\n2,1,0,3\n3,1,1,4\n')
+code, out, err = run("fit", temp("quoted.csv"), "-o", temp("quoted-out.csv"), "-q")
+code2, out2, err2 = run("audit", temp("quoted.csv"), temp("quoted-out.csv"))
+with open(temp("quoted-out.csv")) as f:
+    header = f.readline()
+check(code == 0 and code2 == 0 and ',"wall, inner",' in header and "0 shape violations" in out2,
+      "a quoted name with a comma is a point array, written quoted and read back", header[:60] + " " + err2)
+dialect_errors = [
+    ("extra.csv", "x,y,z\n0,0,0\n1,0,0,7\n", "extra.csv:3: this row has 4 fields, the header names 3"),
+    ("short.csv", "x,y,z,line_id\n0,0,0,1\n1,0,0\n", "short.csv:3: this row has 3 fields, the header names 4"),
+    ("headerless-extra.csv", "0,0,0\n1,0,0,7\n", "headerless-extra.csv:2: this row has 4 fields, the first row has 3"),
+    ("duplicate.csv", "x,y,z,X\n0,0,0,1\n", "duplicate.csv:1: the header names 'X' twice (columns 1 and 4"),
+    ("duplicate-array.csv", "x,y,z,radius,Radius\n0,0,0,1,1\n", "the header names 'Radius' twice (columns 4 and 5"),
+    ("noname.csv", "x,y,z,\n0,0,0,\n", "noname.csv:1: column 4 of the header has no name"),
+    ("noxyz.csv", "a;b;c\n0;0;0\n", "noxyz.csv:1: the header must name the columns x, y and z; it names a, b, c"),
+    ("comma.csv", "x;y;z\n0,5;1;2\n", "comma.csv:2: column 1 (x) is not a number: '0,5' (decimal commas are not read"),
+    ("quote.csv", 'x,y,z\n0,0,"1\n', 'quote.csv:2: a double quote is not closed'),
+]
+for name, text, message in dialect_errors:
+    code, out, err = run("fit", write_text(name, text), "-o", temp("x.csv"))
+    check(code == 1 and message in err and out == "", "CSV refused: %s" % name, "exit %d, %r" % (code, err.strip()))
+code, out, err = run("fit", write_text("utf16.csv", "x,y,z\n0,0,0\n1,1,1\n", encoding="utf-16"), "-o", temp("x.csv"))
+check(code == 1 and "the text is UTF-16: save the CSV as UTF-8" in err, "a UTF-16 CSV is refused", err.strip())
+help_text = " ".join(run("--help")[1].split())
+rules = ("byte order mark is skipped", "LF or CRLF", "the separator is a tab if the first row has one, else ';'",
+         "double quotes", "--line-column NAME", "line_id, line, lineid, id, cell, cell_id, track or streamline",
+         "Without a header a CSV has 3 columns (x,y,z) or 4 (x,y,z,line_id)", "cell array LineId")
+check(all(rule in help_text for rule in rules), "--help states the CSV rules",
+      "missing %s" % [r for r in rules if r not in help_text])
 
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
