@@ -62,7 +62,8 @@ curvature and signed torsion, audited against the shape of the data (paper 001,
 Definition 1). Prints a summary per line.
 audit: the discrete shape of INPUT's polylines (curvature, torsion, collinear and
 coplanar runs) and, given a CURVE fitted to them by `fit`, where it breaks that
-shape.
+shape. Lines pair in order; a CURVE that does not match INPUT (another number
+of lines, of spans, or closure) is an error.
 
 Files: INPUT and CURVE are .vtp, legacy .vtk or .csv; OUTPUT is .vtp or .csv.
 OUTPUT is never INPUT.
@@ -133,9 +134,10 @@ Common options:
   --version              the version of shapesplines
 Each option may be given once.
 
-Exit status: 0 on success, 1 on bad usage, unreadable input or an output that
-cannot be written (checked before any work, and again when written), 2 when
-the filter reported errors (lines skipped: see the messages).
+Exit status: 0 on success, 1 on bad usage, unreadable input, a CURVE that does
+not match INPUT, or an output that cannot be written (checked before any work,
+and again when written), 2 when the filter reported errors (lines skipped: see
+the messages).
 )";
 
 const char* const Version = "shapesplines " SHAPESPLINES_VERSION "\n";
@@ -968,6 +970,36 @@ void Summarize(vtkPolyData* curve)
   }
 }
 
+const char* const OutOfRange = "a point id out of range";
+
+/// Why a data line cannot be audited, or "": a point id out of range (checked
+/// first: the others read the points), a point not finite, fewer than two
+/// distinct points (no span).
+std::string DataProblem(vtkPolyData* data, const vtkIdType* ids, vtkIdType n)
+{
+  if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= data->GetNumberOfPoints(); }))
+  {
+    return OutOfRange;
+  }
+  double first[3] = { 0, 0, 0 };
+  if (n > 0)
+  {
+    data->GetPoint(ids[0], first);
+  }
+  bool distinct = false;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    double p[3];
+    data->GetPoint(ids[k], p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return "a point is not finite";
+    }
+    distinct = distinct || p[0] != first[0] || p[1] != first[1] || p[2] != first[2];
+  }
+  return distinct ? "" : "fewer than two distinct points";
+}
+
 // --------------------------------------------------------------------------- commands
 
 /// The spline families: each makes its configured filter from the options.
@@ -1184,10 +1216,13 @@ int Audit(Arguments& args)
     CheckWritable(output);
   }
 
-  analysis->SetInputData(0, Read(args.Positional[0], lineColumn));
+  const std::string input = args.Positional[0];
+  vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
+  analysis->SetInputData(0, data);
+  vtkSmartPointer<vtkPolyData> curve;
   if (args.Positional.size() == 2)
   {
-    vtkSmartPointer<vtkPolyData> curve = Read(args.Positional[1]);
+    curve = Read(args.Positional[1]);
     for (const char* name : { "SpanIndex", "Tangent", "Binormal", "Curvature", "Torsion" })
     {
       if (!curve->GetPointData()->GetArray(name))
@@ -1196,68 +1231,95 @@ int Audit(Arguments& args)
           ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
       }
     }
+    // Lines are paired in order: with a line more or less every pair is wrong.
+    if (curve->GetNumberOfLines() != data->GetNumberOfLines())
+    {
+      std::ostringstream message;
+      message << "CURVE " << args.Positional[1] << " does not match INPUT " << input
+              << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
+              << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
+              << "fitted to; a fit that skipped lines wrote fewer)";
+      throw std::runtime_error(message.str());
+    }
     analysis->SetInputData(1, curve);
   }
   MessageCounter messages({ analysis });
   analysis->Update();
   vtkPolyData* result = analysis->GetOutput();
-  if (!quiet)
+  vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
+  vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
+  vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
+  vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
+  // The segments at an open line's ends have no discrete torsion: 0 there, and
+  // not coplanar; a coplanar segment's 0 is the data's.
+  const auto definedTorsion = [&](vtkIdType id) {
+    return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
+  };
+  std::ostream silent(nullptr);
+  std::ostream& summary = quiet ? silent : std::cout;
+  std::vector<std::string> unmatched;
+  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
   {
-    vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
-    vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
-    vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
-    vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
-    // The segments at an open line's ends have no discrete torsion: 0 there, and
-    // not coplanar; a coplanar segment's 0 is the data's.
-    const auto definedTorsion = [&](vtkIdType id) {
-      return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
-    };
-    auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
-    vtkIdType line = 0;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const std::string problem = DataProblem(result, ids, n);
+    if (problem == OutOfRange)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= result->GetNumberOfPoints(); }))
-      {
-        std::cout << LineName(result, line) << ": skipped (a point id out of range)\n";
-        continue;
-      }
-      double maxCurvature = 0.0;
-      int collinearCount = 0;
-      int coplanarCount = 0;
-      for (vtkIdType k = 0; k < n; ++k)
-      {
-        maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-        collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
-        coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
-      }
-      std::cout << LineName(result, line) << ": " << n << " points, max discrete curvature "
-                << maxCurvature << ", discrete torsion "
-                << RangeText(torsion, ids, n, definedTorsion) << ", " << collinearCount << " collinear points, " << coplanarCount
-                << " coplanar segments";
-      if (args.Positional.size() == 2)
-      {
-        std::cout << "; curve: " << CellValue(result, "ShapeViolations", line)
-                  << " shape violations (collinearity "
-                  << CellValue(result, "CollinearityViolations", line) << ", convexity "
-                  << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
-                  << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
-                  << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
-                  << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
-                  << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
-      }
-      std::cout << "\n";
+      summary << LineName(result, line) << ": skipped (" << problem << ")\n";
+      continue;
     }
+    double maxCurvature = 0.0;
+    int collinearCount = 0;
+    int coplanarCount = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
+      collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
+      coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
+    }
+    summary << LineName(result, line) << ": " << n << " points, max discrete curvature "
+            << maxCurvature << ", discrete torsion " << RangeText(torsion, ids, n, definedTorsion)
+            << ", " << collinearCount << " collinear points, " << coplanarCount
+            << " coplanar segments";
+    if (curve && CellValue(result, "ShapeViolations", line) >= 0)
+    {
+      summary << "; curve: " << CellValue(result, "ShapeViolations", line)
+              << " shape violations (collinearity "
+              << CellValue(result, "CollinearityViolations", line) << ", convexity "
+              << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
+              << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
+              << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
+              << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
+              << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
+    }
+    else if (curve)
+    {
+      // Not audited (-1, or no counts at all): the data's fault, else the curve's.
+      const std::string why = !result->GetCellData()->GetArray("ShapeViolations")
+        ? "INPUT has cells other than lines: no counts per line"
+        : problem;
+      summary << "; curve: not audited (" << (why.empty() ? "it does not match the data" : why)
+              << ")";
+      if (why.empty())
+      {
+        unmatched.push_back(LineName(result, line));
+      }
+    }
+    summary << "\n";
+  }
+  if (!unmatched.empty())
+  {
+    throw std::runtime_error("CURVE " + args.Positional[1] + " does not match INPUT " + input +
+      " (" + Join(unmatched) + ": the curve's spans or closure differ from the data's, see the "
+      "warnings): audit a curve with the data it was fitted to, and the same --closed");
   }
   if (!output.empty())
   {
     Write(result, output);
-    if (!quiet)
-    {
-      std::cout << "wrote " << output << "\n";
-    }
+    summary << "wrote " << output << "\n";
   }
   return messages.Errors > 0 ? 2 : 0;
 }

@@ -481,6 +481,29 @@ rules = ("byte order mark is skipped", "LF or CRLF", "the separator is a tab if 
 check(all(rule in help_text for rule in rules), "--help states the CSV rules",
       "missing %s" % [r for r in rules if r not in help_text])
 
+# ---------------------------------------------------------------------------- audit: the curve's own data
+# A curve audited against data it was not fitted to is an error, never "-1 violations".
+akima_vtp = os.path.join(args.data, "akima.vtp")
+code, out, err = run("fit", helix_vtp, "-o", temp("helix-curve.vtp"), "-q")
+code, out, err = run("audit", akima_vtp, temp("helix-curve.vtp"), "-o", temp("mismatch.csv"))
+check(code == 1 and "CURVE %s does not match INPUT %s (line 0: the curve's spans or closure differ"
+      % (temp("helix-curve.vtp"), akima_vtp) in err and "curve: not audited (it does not match the data)" in out
+      and "-1" not in out and not os.path.exists(temp("mismatch.csv")),
+      "audit: a curve of other data is an error (exit 1) and nothing is written", "exit %d, %r, %r" % (code, out, err))
+code, out, err = run("audit", os.path.join(args.data, "aorta-centerline.vtp"), temp("helix-curve.vtp"), "-q")
+check(code == 1 and "does not match INPUT" in err and "lines 1 in CURVE, 2 in INPUT" in err,
+      "audit: a curve with another number of lines is an error (exit 1), even with -q", err.strip())
+code, out, err = run("audit", helix_vtp, temp("helix-curve.vtp"), "--closed", "-q")
+check(code == 1 and "does not match INPUT" in err and "the same --closed" in err and out == "",
+      "audit -q: an open curve audited as closed is an error (exit 1)", err.strip())
+# The fit skipped the NaN line: its curve does not pair with the data line by line.
+code, out, err = run("fit", temp("nan.csv"), "-o", temp("nan-curve.vtp"), "-q")
+code, out, err = run("audit", temp("nan.csv"), temp("nan-curve.vtp"))
+check(code == 1 and "lines 1 in CURVE, 2 in INPUT" in err and "a fit that skipped lines wrote fewer" in err,
+      "audit: the curve of a fit that skipped a line does not match its data (exit 1)", err.strip())
+code, out, err = run("audit", helix_vtp, temp("helix-curve.vtp"))
+check(code == 0 and "curve: 0 shape violations" in out, "audit: the curve with its own data is audited", out.strip())
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
