@@ -1258,6 +1258,7 @@ int Audit(Arguments& args)
   std::ostream silent(nullptr);
   std::ostream& summary = quiet ? silent : std::cout;
   std::vector<std::string> unmatched;
+  std::vector<std::string> approximations;
   auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
   vtkIdType line = 0;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
@@ -1297,15 +1298,18 @@ int Audit(Arguments& args)
     }
     else if (curve)
     {
-      // Not audited (-1, or no counts at all): the data's fault, else the curve's.
+      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
+      // approximation's knots are not the data points (its NoiseLevel is the distance).
+      const bool approximation = CellValue(curve, "NoiseLevel", line) > 0.0;
       const std::string why = !result->GetCellData()->GetArray("ShapeViolations")
         ? "INPUT has cells other than lines: no counts per line"
-        : problem;
-      summary << "; curve: not audited (" << (why.empty() ? "it does not match the data" : why)
-              << ")";
-      if (why.empty())
+        : !problem.empty() ? problem
+        : approximation    ? "it approximates the data: its knots are not the data points"
+                           : "it does not match the data";
+      summary << "; curve: not audited (" << why << ")";
+      if (problem.empty())
       {
-        unmatched.push_back(LineName(result, line));
+        (approximation ? approximations : unmatched).push_back(LineName(result, line));
       }
     }
     summary << "\n";
@@ -1314,7 +1318,15 @@ int Audit(Arguments& args)
   {
     throw std::runtime_error("CURVE " + args.Positional[1] + " does not match INPUT " + input +
       " (" + Join(unmatched) + ": the curve's spans or closure differ from the data's, see the "
-      "warnings): audit a curve with the data it was fitted to, and the same --closed");
+      "warnings): audit a curve with the data it was fitted to, and the same --closed (a "
+      "curve that approximates the data is audited by fit alone)");
+  }
+  if (!approximations.empty())
+  {
+    throw std::runtime_error("CURVE " + args.Positional[1] + " approximates INPUT " + input +
+      " (" + Join(approximations) + "): audit checks a curve through the data points; fit "
+      "audited the approximation against its reference polygon (ShapeViolations in CURVE, "
+      "printed by fit)");
   }
   if (!output.empty())
   {

@@ -503,6 +503,13 @@ check(code == 1 and "lines 1 in CURVE, 2 in INPUT" in err and "a fit that skippe
       "audit: the curve of a fit that skipped a line does not match its data (exit 1)", err.strip())
 code, out, err = run("audit", helix_vtp, temp("helix-curve.vtp"))
 check(code == 0 and "curve: 0 shape violations" in out, "audit: the curve with its own data is audited", out.strip())
+# An approximation's knots are not the data points: only fit audits it, and audit says so.
+code, out, err = run("fit", helix_vtp, "-o", temp("helix-approximation.vtp"), "-q", "--family", "quintic",
+                     "--mode", "approximate")
+code, out, err = run("audit", helix_vtp, temp("helix-approximation.vtp"))
+check(code == 1 and "approximates INPUT" in err and "fit audited the approximation against its reference polygon"
+      in err and "curve: not audited (it approximates the data" in out,
+      "audit: an approximation is not audited, and audit says why (exit 1)", "exit %d, %r" % (code, err.strip()))
 
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
