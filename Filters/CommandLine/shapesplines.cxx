@@ -87,6 +87,16 @@ decimal point, not a comma.
 CSV output: a row per sample, line_id (the input's, else the line's place)
 then x,y,z then every point array: a CSV written by fit reads back whole.
 
+Shape violations (paper 001, Definition 1): fit counts them in its own audit of
+each curve, the curve's cell array ShapeViolations: 16 samples a span whatever
+the output's sampling, each knot seen from both of its spans, samples whose
+curvature is within rounding of zero left out, spans straying from the data
+counted. audit can only read the written samples: one frame per knot (the span
+that starts there), the output's sampling, no rounding. So each count says
+which it is ("fit's audit", "in the written samples"), and audit also prints
+fit's count when CURVE holds it (.vtp). fit's is the larger where a curve's
+torsion changes sign at a knot (a C2 curve's torsion jumps there).
+
 Options of fit:
   --family NAME          spline family (default cubic):
                            cubic     classical C2 cubic spline (the baseline)
@@ -966,7 +976,7 @@ void Summarize(vtkPolyData* curve)
     std::cout << LineName(curve, line) << ": " << n << " samples, length "
               << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
               << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
-              << CellValue(curve, "ShapeViolations", line) << "\n";
+              << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
   }
 }
 
@@ -1288,13 +1298,18 @@ int Audit(Arguments& args)
     if (curve && CellValue(result, "ShapeViolations", line) >= 0)
     {
       summary << "; curve: " << CellValue(result, "ShapeViolations", line)
-              << " shape violations (collinearity "
+              << " shape violations in the written samples (collinearity "
               << CellValue(result, "CollinearityViolations", line) << ", convexity "
               << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
               << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
               << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
               << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
               << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
+      // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
+      if (curve->GetCellData()->GetArray("ShapeViolations"))
+      {
+        summary << "; fit's audit: " << CellValue(curve, "ShapeViolations", line);
+      }
     }
     else if (curve)
     {

@@ -511,6 +511,30 @@ check(code == 1 and "approximates INPUT" in err and "fit audited the approximati
       in err and "curve: not audited (it approximates the data" in out,
       "audit: an approximation is not audited, and audit says why (exit 1)", "exit %d, %r" % (code, err.strip()))
 
+# ---------------------------------------------------------------------------- fit's and audit's counts
+# fit audits its curve on its own sampling (both sides of each knot, rounding known);
+# audit reads the written samples. Each count says which it is, and audit repeats fit's.
+aorta_vtp = os.path.join(args.data, "aorta-centerline.vtp")
+code, out, err = run("fit", aorta_vtp, "-o", temp("aorta16.vtp"), "--samples", 16)
+fit_counts = [int(c) for c in re.findall(r"shape violations (\d+) \(fit's audit\)$", out, re.M)]
+code2, out2, err2 = run("audit", aorta_vtp, temp("aorta16.vtp"))
+audit_rows = re.findall(r"curve: (\d+) shape violations in the written samples \(collinearity (\d+), "
+                        r"convexity (\d+)\+(\d+), coplanarity (\d+), torsion sign (\d+)\+(\d+)\); "
+                        r"fit's audit: (\d+)$", out2, re.M)
+check(code == 0 and code2 == 0 and len(fit_counts) == 2 and len(audit_rows) == 2
+      and all(int(r[0]) == sum(int(c) for c in r[1:7]) for r in audit_rows)
+      and [int(r[7]) for r in audit_rows] == fit_counts,
+      "fit --samples 16 and audit of its curve: each count labelled, audit's adds up, fit's repeated by audit",
+      "fit %s, audit %s" % (fit_counts, [(r[0], r[7]) for r in audit_rows]))
+code, out, err = run("fit", aorta_vtp, "-o", temp("aorta16.csv"), "--samples", 16, "-q")
+code2, out2, err2 = run("audit", aorta_vtp, temp("aorta16.csv"))
+check(code2 == 0 and out2.count("in the written samples") == 2 and "fit's audit" not in out2,
+      "audit of a CSV curve (no cell arrays): only the count of the written samples",
+      out2.strip().splitlines()[0][-120:])
+help_text = " ".join(run("--help")[1].split())
+check("16 samples a span whatever the output's sampling, each knot seen from both of its spans" in help_text
+      and "audit can only read the written samples" in help_text, "--help explains the two counts")
+
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
