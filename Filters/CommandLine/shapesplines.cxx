@@ -19,6 +19,7 @@
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
 #include "vtkIntArray.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
@@ -66,7 +67,9 @@ shape. Lines pair in order; a CURVE that does not match INPUT (another number
 of lines, of spans, or closure) is an error.
 
 Files: INPUT and CURVE are .vtp, legacy .vtk or .csv; OUTPUT is .vtp or .csv.
-OUTPUT is never INPUT.
+OUTPUT is never INPUT. INPUT or CURVE - reads stdin: VTK XML if it starts with
+<?xml or <VTKFile, legacy VTK if with # vtk DataFile, else CSV. -o - writes CSV
+on stdout, and the summary goes to stderr (a .vtp is written to a file).
 CSV input: a row per point; # starts a comment, blank rows are skipped. A first
 row whose first field is not a number is a header naming the columns: x, y, z,
 the line ids and any others, which become point arrays (name_0, name_1, ... in
@@ -137,7 +140,7 @@ Options of fit:
   --data-tolerance E     shape tolerance epsilon_1 on the data (default 1e-6)
   --curve-tolerance E    shape tolerance epsilon_2 on the curve (default 1e-3)
 Common options:
-  -o, --output OUTPUT    output file (required for fit)
+  -o, --output OUTPUT    output file (required for fit), - for CSV on stdout
   --line-column NAME     CSV INPUT: the column of line ids (see above)
   -q, --quiet            no summary and no progress bar
   -h, --help             this text
@@ -231,8 +234,8 @@ const std::set<std::string> ValueOptions = { "output", "family", "end-condition"
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
   "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length",
   "data-tolerance", "curve-tolerance", "line-column" };
-const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help",
-  "version" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters",
+  "quiet", "help", "version" };
 
 Arguments Parse(int argc, char* argv[])
 {
@@ -294,6 +297,42 @@ Arguments Parse(int argc, char* argv[])
 }
 
 // --------------------------------------------------------------------------- files
+
+/// A VTK message without its origin: VTK's text reads
+/// "Warning: In file, line N\nclass (address): message\n\n".
+std::string MessageText(const char* text)
+{
+  std::string message = text;
+  const size_t origin = message.find("): ");
+  if (origin != std::string::npos)
+  {
+    message = message.substr(origin + 3);
+  }
+  message.erase(message.find_last_not_of("\n") + 1);
+  return message;
+}
+
+/// The errors of a reader or writer and its pipeline, kept for one message of ours
+/// instead of VTK's log lines.
+struct FileErrors
+{
+  explicit FileErrors(vtkAlgorithm* algorithm)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+      auto* errors = static_cast<FileErrors*>(self);
+      if (errors->First.empty())
+      {
+        errors->First = MessageText(static_cast<const char*>(text));
+      }
+    });
+    algorithm->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+
+  vtkNew<vtkCallbackCommand> Callback;
+  std::string First;
+};
 
 /// Column names that hold line ids, compared without case (--line-column names another).
 const std::vector<std::string> LineIdNames = { "line_id", "line", "lineid", "id", "cell",
@@ -423,7 +462,8 @@ CsvColumns HeaderColumns(
     const std::string name = Lower(names[f]);
     if (name.empty())
     {
-      throw std::runtime_error(where + "column " + std::to_string(f + 1) + " of the header has no name");
+      throw std::runtime_error(
+        where + "column " + std::to_string(f + 1) + " of the header has no name");
     }
     const auto [previous, added] = seen.emplace(name, f);
     if (!added)
@@ -658,20 +698,56 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
   return data;
 }
 
-/// Reads a .vtp, legacy .vtk or .csv file; lineColumn names a CSV's line id column.
+/// The format of what stdin holds: VTK XML or legacy VTK by their first words, else CSV.
+std::string StandardInputFormat(const std::string& content)
+{
+  const size_t bom = content.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  const size_t start = std::min(content.find_first_not_of(" \t\r\n", bom), content.size());
+  const auto startsWith = [&](const char* word) {
+    return content.compare(start, std::strlen(word), word) == 0;
+  };
+  return startsWith("<?xml") || startsWith("<VTKFile") ? ".vtp"
+    : startsWith("# vtk DataFile")                     ? ".vtk"
+                                                       : ".csv";
+}
+
+/// How messages name an INPUT or CURVE: "-" is stdin.
+std::string InputName(const std::string& path)
+{
+  return path == "-" ? "stdin" : path;
+}
+
+/// Reads a .vtp, legacy .vtk or .csv file, or stdin for "-" (see StandardInputFormat);
+/// lineColumn names a CSV's line id column.
 vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& lineColumn = "")
 {
-  if (!std::filesystem::is_regular_file(path))
+  const bool standardInput = path == "-";
+  const std::string name = InputName(path);
+  std::string content;
+  if (standardInput)
+  {
+    if (isatty(STDIN_FILENO))
+    {
+      throw UsageError("INPUT - reads stdin, which is a terminal: pipe the data in");
+    }
+    content.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  }
+  else if (!std::filesystem::is_regular_file(path))
   {
     throw std::runtime_error("no such file: " + path);
   }
-  const std::string extension = Extension(path);
+  const std::string extension = standardInput ? StandardInputFormat(content) : Extension(path);
   if (!lineColumn.empty() && extension != ".csv")
   {
-    throw UsageError("--line-column names a column of a CSV INPUT, and " + path + " is not one");
+    throw UsageError("--line-column names a column of a CSV INPUT, and " + name + " is not one");
   }
   vtkSmartPointer<vtkPolyData> data;
-  if (extension == ".csv")
+  if (extension == ".csv" && standardInput)
+  {
+    std::istringstream stream(content);
+    data = ReadCsv(stream, name, lineColumn);
+  }
+  else if (extension == ".csv")
   {
     std::ifstream file(path);
     if (!file)
@@ -683,19 +759,45 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& li
   else if (extension == ".vtp")
   {
     vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
+    if (standardInput)
+    {
+      reader->ReadFromInputStringOn();
+      reader->SetInputString(content);
+    }
+    else
+    {
+      reader->SetFileName(path.c_str());
+    }
+    FileErrors errors(reader);
     reader->Update();
+    if (!errors.First.empty())
+    {
+      throw std::runtime_error("cannot read " + name + ": " + errors.First);
+    }
     data = reader->GetOutput();
   }
   else if (extension == ".vtk")
   {
     vtkNew<vtkPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
+    if (standardInput)
+    {
+      reader->ReadFromInputStringOn();
+      reader->SetInputString(content.data(), static_cast<int>(content.size()));
+    }
+    else
+    {
+      reader->SetFileName(path.c_str());
+    }
+    FileErrors errors(reader);
     if (!reader->IsFilePolyData())
     {
-      throw std::runtime_error(path + " is not a legacy VTK poly data file");
+      throw std::runtime_error(name + " is not a legacy VTK poly data file");
     }
     reader->Update();
+    if (!errors.First.empty())
+    {
+      throw std::runtime_error("cannot read " + name + ": " + errors.First);
+    }
     data = reader->GetOutput();
   }
   else
@@ -705,7 +807,7 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& li
   }
   if (!data || data->GetNumberOfPoints() == 0)
   {
-    throw std::runtime_error("no points read from " + path);
+    throw std::runtime_error("no points read from " + name);
   }
   return data;
 }
@@ -720,6 +822,10 @@ std::string SystemError()
 /// long fit does not end in "cannot write". A file made to find out is removed.
 void CheckWritable(const std::string& path)
 {
+  if (path == "-")
+  {
+    return; // stdout: a write error is found when written
+  }
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
   {
@@ -767,14 +873,8 @@ double LineIdOf(vtkPolyData* data, vtkIdType line)
   return ids ? ids->GetComponent(data->GetNumberOfVerts() + line, 0) : static_cast<double>(line);
 }
 
-void WriteCsv(vtkPolyData* data, const std::string& path)
+void WriteCsv(vtkPolyData* data, std::ostream& file)
 {
-  errno = 0;
-  std::ofstream file(path);
-  if (!file)
-  {
-    throw std::runtime_error("cannot write " + path + ": " + SystemError());
-  }
   file.precision(17);
   std::vector<vtkDataArray*> arrays;
   file << "line_id,x,y,z";
@@ -821,29 +921,45 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
       file << '\n';
     }
   }
-  // The last rows reach the disk only when the file is closed.
-  file.close();
-  if (!file)
-  {
-    throw std::runtime_error("cannot write " + path + ": " + SystemError());
-  }
 }
 
+/// Writes a .vtp or .csv file, or CSV on stdout for "-".
 void Write(vtkPolyData* data, const std::string& path)
 {
+  if (path == "-")
+  {
+    errno = 0;
+    WriteCsv(data, std::cout);
+    std::cout.flush();
+    if (!std::cout)
+    {
+      throw std::runtime_error("cannot write stdout: " + SystemError());
+    }
+    return;
+  }
   if (Extension(path) == ".csv")
   {
-    WriteCsv(data, path);
+    errno = 0;
+    std::ofstream file(path);
+    if (!file)
+    {
+      throw std::runtime_error("cannot write " + path + ": " + SystemError());
+    }
+    WriteCsv(data, file);
+    // The last rows reach the disk only when the file is closed.
+    file.close();
+    if (!file)
+    {
+      throw std::runtime_error("cannot write " + path + ": " + SystemError());
+    }
     return;
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
   writer->SetDataModeToBinary();
-  // The writer's and its pipeline's messages would say in VTK's words what ours says.
-  vtkNew<vtkCallbackCommand> ignore;
-  writer->AddObserver(vtkCommand::ErrorEvent, ignore);
-  writer->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, ignore);
+  // Its messages would say in VTK's words what ours says.
+  FileErrors errors(writer);
   errno = 0;
   writer->Write();
   if (writer->GetErrorCode() != vtkErrorCode::NoError)
@@ -855,6 +971,10 @@ void Write(vtkPolyData* data, const std::string& path)
 /// The output must not be one of the inputs.
 void CheckNotAnInput(const std::string& output, const std::vector<std::string>& inputs)
 {
+  if (output == "-")
+  {
+    return; // stdout
+  }
   for (const std::string& input : inputs)
   {
     std::error_code error;
@@ -877,15 +997,8 @@ struct MessageCounter
       auto* counter = static_cast<MessageCounter*>(self);
       const bool error = event == vtkCommand::ErrorEvent;
       (error ? counter->Errors : counter->Warnings)++;
-      // VTK's text reads "Warning: In file, line N\nclass (address): message\n\n".
-      std::string message = static_cast<const char*>(text);
-      const size_t origin = message.find("): ");
-      if (origin != std::string::npos)
-      {
-        message = message.substr(origin + 3);
-      }
-      message.erase(message.find_last_not_of("\n") + 1);
-      std::cerr << (error ? "error: " : "warning: ") << message << '\n';
+      std::cerr << (error ? "error: " : "warning: ") << MessageText(static_cast<const char*>(text))
+                << '\n';
     });
     for (vtkObject* object : objects)
     {
@@ -957,7 +1070,7 @@ std::string RangeText(vtkDataArray* array, const vtkIdType* ids, vtkIdType n,
 }
 
 /// One line per output line: samples, length, curvature and torsion ranges, violations.
-void Summarize(vtkPolyData* curve)
+void Summarize(vtkPolyData* curve, std::ostream& summary)
 {
   vtkDataArray* curvature = curve->GetPointData()->GetArray("Curvature");
   vtkDataArray* torsion = curve->GetPointData()->GetArray("Torsion");
@@ -973,7 +1086,7 @@ void Summarize(vtkPolyData* curve)
     {
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
     }
-    std::cout << LineName(curve, line) << ": " << n << " samples, length "
+    summary << LineName(curve, line) << ": " << n << " samples, length "
               << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
               << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
               << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
@@ -987,7 +1100,8 @@ const char* const OutOfRange = "a point id out of range";
 /// distinct points (no span).
 std::string DataProblem(vtkPolyData* data, const vtkIdType* ids, vtkIdType n)
 {
-  if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= data->GetNumberOfPoints(); }))
+  if (std::any_of(
+        ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= data->GetNumberOfPoints(); }))
   {
     return OutOfRange;
   }
@@ -1183,7 +1297,7 @@ int Fit(Arguments& args)
   vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
   if (data->GetNumberOfLines() == 0)
   {
-    throw std::runtime_error(input + " has no lines (polyline cells) to fit");
+    throw std::runtime_error(InputName(input) + " has no lines (polyline cells) to fit");
   }
   MessageCounter messages({ filter });
   if (!quiet)
@@ -1196,9 +1310,12 @@ int Fit(Arguments& args)
   Write(curve, output);
   if (!quiet)
   {
-    Summarize(curve);
-    std::cout << "wrote " << output << " (" << curve->GetNumberOfLines() << " lines, "
-              << curve->GetNumberOfPoints() << " samples)\n";
+    // With the curve on stdout, the summary goes to stderr.
+    std::ostream& summary = output == "-" ? std::cerr : std::cout;
+    Summarize(curve, summary);
+    summary << "wrote " << (output == "-" ? "stdout" : output) << " ("
+            << curve->GetNumberOfLines() << " lines, " << curve->GetNumberOfPoints()
+            << " samples)\n";
   }
   return messages.Errors > 0 ? 2 : 0;
 }
@@ -1208,6 +1325,10 @@ int Audit(Arguments& args)
   if (args.Positional.empty() || args.Positional.size() > 2)
   {
     throw UsageError("audit takes INPUT and optionally CURVE");
+  }
+  if (std::count(args.Positional.begin(), args.Positional.end(), "-") > 1)
+  {
+    throw UsageError("INPUT and CURVE cannot both be - (stdin)");
   }
   const std::string output = args.Value("output", "");
   if (!output.empty())
@@ -1237,7 +1358,7 @@ int Audit(Arguments& args)
     {
       if (!curve->GetPointData()->GetArray(name))
       {
-        throw std::runtime_error(args.Positional[1] + " has no point array " + name +
+        throw std::runtime_error(InputName(args.Positional[1]) + " has no point array " + name +
           ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
       }
     }
@@ -1245,8 +1366,8 @@ int Audit(Arguments& args)
     if (curve->GetNumberOfLines() != data->GetNumberOfLines())
     {
       std::ostringstream message;
-      message << "CURVE " << args.Positional[1] << " does not match INPUT " << input
-              << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
+      message << "CURVE " << InputName(args.Positional[1]) << " does not match INPUT "
+              << InputName(input) << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
               << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
               << "fitted to; a fit that skipped lines wrote fewer)";
       throw std::runtime_error(message.str());
@@ -1266,7 +1387,8 @@ int Audit(Arguments& args)
     return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
   };
   std::ostream silent(nullptr);
-  std::ostream& summary = quiet ? silent : std::cout;
+  // With the result on stdout, the summary goes to stderr.
+  std::ostream& summary = quiet ? silent : output == "-" ? std::cerr : std::cout;
   std::vector<std::string> unmatched;
   std::vector<std::string> approximations;
   auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
@@ -1331,22 +1453,23 @@ int Audit(Arguments& args)
   }
   if (!unmatched.empty())
   {
-    throw std::runtime_error("CURVE " + args.Positional[1] + " does not match INPUT " + input +
-      " (" + Join(unmatched) + ": the curve's spans or closure differ from the data's, see the "
-      "warnings): audit a curve with the data it was fitted to, and the same --closed (a "
-      "curve that approximates the data is audited by fit alone)");
+    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " does not match INPUT " +
+      InputName(input) + " (" + Join(unmatched) +
+      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
+      "with the data it was fitted to, and the same --closed (a curve that approximates the "
+      "data is audited by fit alone)");
   }
   if (!approximations.empty())
   {
-    throw std::runtime_error("CURVE " + args.Positional[1] + " approximates INPUT " + input +
-      " (" + Join(approximations) + "): audit checks a curve through the data points; fit "
-      "audited the approximation against its reference polygon (ShapeViolations in CURVE, "
-      "printed by fit)");
+    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " approximates INPUT " +
+      InputName(input) + " (" + Join(approximations) +
+      "): audit checks a curve through the data points; fit audited the approximation against "
+      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
   }
   if (!output.empty())
   {
     Write(result, output);
-    summary << "wrote " << output << "\n";
+    summary << "wrote " << (output == "-" ? "stdout" : output) << "\n";
   }
   return messages.Errors > 0 ? 2 : 0;
 }
@@ -1354,8 +1477,16 @@ int Audit(Arguments& args)
 
 int main(int argc, char* argv[])
 {
-  // Messages go through the observers above, not VTK's default window.
+  // Messages go through the observers above, not VTK's default window; those no
+  // observer takes (a reader's XML parser's) are printed alike, not as VTK's log.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkLogger::AddCallback("shapesplines",
+    [](void*, const vtkLogger::Message& message) {
+      std::cerr << (message.verbosity <= vtkLogger::VERBOSITY_ERROR ? "error: " : "warning: ")
+                << MessageText(message.message) << '\n';
+    },
+    nullptr, vtkLogger::VERBOSITY_WARNING);
   const std::string command = argc > 1 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help")
   {

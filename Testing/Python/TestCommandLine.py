@@ -36,6 +36,12 @@ def run(*words):
     return result.returncode, result.stdout, result.stderr
 
 
+def run_with_input(data, *words):
+    """run() with data (bytes) on stdin."""
+    result = subprocess.run([args.exe] + [str(w) for w in words], input=data, capture_output=True, timeout=120)
+    return result.returncode, result.stdout.decode(), result.stderr.decode()
+
+
 def temp(name):
     return os.path.join(args.temp, "cli-" + name)
 
@@ -85,7 +91,8 @@ def helix(per_turn, turns, a=2.0, b=1.0):
 code, out, err = run("--help")
 options = ["--family", "--end-condition", "--kind", "--tension", "--max-tension", "--fixed", "--continuity",
            "--mode", "--knots", "--gamma", "--lambda", "--parameterization", "--closed", "--samples", "--arc-length",
-           "--vmtk-names", "--data-tolerance", "--curve-tolerance", "--output", "--quiet", "--help"]
+           "--vmtk-names", "--data-tolerance", "--curve-tolerance", "--output", "--quiet", "--help", "--version",
+           "--line-column"]
 missing = [o for o in options if o not in out]
 check(code == 0 and "fit INPUT" in out and "audit INPUT" in out and not missing,
       "--help documents both commands and every option", "missing %s" % missing if missing else "")
@@ -283,7 +290,8 @@ write_cases = [
 for words, reason in write_cases:
     code, out, err = run(*words)
     output = str(words[3])
-    check(code == 1 and "cannot write %s: %s" % (output, reason) in err and "wrote" not in out,
+    check(code == 1 and "cannot write %s: %s" % (output, reason) in err and "wrote" not in out
+          and "ERR|" not in err and "Error opening" not in err,
           "a failed write is an error: %s ... -o %s" % (words[0], os.path.basename(output)),
           "exit %d, %r, %r" % (code, err.strip(), out.strip()[-60:]))
 # The up-front check finds a missing directory before the fit: no summary either.
@@ -534,6 +542,68 @@ check(code2 == 0 and out2.count("in the written samples") == 2 and "fit's audit"
 help_text = " ".join(run("--help")[1].split())
 check("16 samples a span whatever the output's sampling, each knot seen from both of its spans" in help_text
       and "audit can only read the written samples" in help_text, "--help explains the two counts")
+
+# ---------------------------------------------------------------------------- stdin and stdout
+def read_bytes(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def csv_text(text):
+    """The columns of CSV text with a header, like read_csv."""
+    rows = text.splitlines()
+    values = np.loadtxt(rows[1:], delimiter=",", ndmin=2)
+    return {name: values[:, i] for i, name in enumerate(rows[0].split(","))}
+
+
+# -o - : the curve as CSV on stdout, nothing else; the summary on stderr.
+pair_path = pair_csv("pair-stdin.csv", "x,y,z,id", xyz_id)
+code, out, err = run_with_input(read_bytes(pair_path), "fit", "-", "-o", "-")
+curve = csv_text(out) if code == 0 else {"line_id": np.array([])}
+lines = summary_lines(err)
+check(code == 0 and list(np.unique(curve["line_id"])) == [5.0, 7.0] and len(curve["x"]) == 802
+      and sorted(lines) == ["5", "7"] and all(abs(l - pair_length) < 1e-3 * pair_length for _, l in lines.values())
+      and "wrote stdout (2 lines, 802 samples)" in err,
+      "fit - -o -: CSV from stdin, the curve's CSV alone on stdout, the summary on stderr",
+      "exit %d, %r" % (code, err.strip()[:200]))
+code2, out2, err2 = run("fit", pair_path, "-o", temp("pair-file.csv"), "-q")
+check(code2 == 0 and out.encode() == read_bytes(temp("pair-file.csv")), "stdout holds what the .csv file holds")
+# A pipe: fit's CSV on stdout is audit's CURVE on stdin.
+code2, out2, err2 = run_with_input(out.encode(), "audit", pair_path, "-")
+check(code2 == 0 and out2.count("curve: 0 shape violations in the written samples") == 2,
+      "fit ... -o - | audit INPUT -: the curve read back from stdin and audited", err2.strip())
+code2, out2, err2 = run_with_input(read_bytes(pair_path), "fit", "-", "-o", temp("pair-named-out.csv"), "-q",
+                                   "--line-column", "ID")
+check(code2 == 0 and list(np.unique(read_csv(temp("pair-named-out.csv"))["line_id"])) == [5.0, 7.0],
+      "--line-column applies to a CSV on stdin", err2.strip())
+# VTK XML and legacy VTK on stdin are told from CSV by their first words.
+for name in (helix_vtp, temp("two.vtk")):
+    code, out, err = run_with_input(read_bytes(name), "fit", "-", "-o", "-", "-q")
+    code2, out2, err2 = run("fit", name, "-o", temp("from-file.csv"), "-q")
+    check(code == 0 and code2 == 0 and out.encode() == read_bytes(temp("from-file.csv")),
+          "fit - with %s on stdin: the same curve as from the file" % os.path.basename(name), err.strip())
+code, out, err = run("audit", pair_path, "-o", "-", "-q")
+check(code == 0 and csv_text(out)["DiscreteCurvature"].shape == (82,) and err == "",
+      "audit -o -: the discrete shape as CSV on stdout", err.strip())
+with open("/dev/full", "w") as full:
+    result = subprocess.run([args.exe, "fit", pair_path, "-o", "-", "-q"], stdout=full, stderr=subprocess.PIPE,
+                            text=True, timeout=120)
+check(result.returncode == 1 and "cannot write stdout: No space left on device" in result.stderr,
+      "a failed write on stdout is an error (exit 1)", result.stderr.strip())
+stdin_errors = [
+    (b"<?xml version='1.0'?><VTKFile", ("fit", "-", "-o", temp("x.csv")), "shapesplines: cannot read stdin:"),
+    (read_bytes(helix_vtp), ("fit", "-", "-o", temp("x.csv"), "--line-column", "id"),
+     "--line-column names a column of a CSV INPUT, and stdin is not one"),
+    (b"", ("fit", "-", "-o", temp("x.csv")), "no points read from stdin"),
+    (b"x,y,z\n0,0,0\n1,0,0,1\n", ("fit", "-", "-o", temp("x.csv")), "stdin:3: this row has 4 fields"),
+    (read_bytes(pair_path), ("audit", "-", "-"), "INPUT and CURVE cannot both be - (stdin)"),
+]
+for data, words, message in stdin_errors:
+    code, out, err = run_with_input(data, *words)
+    check(code == 1 and message in err and "ERR|" not in err, "stdin refused: %s" % message, "exit %d, %r" % (code, err))
+help_text = " ".join(run("--help")[1].split())
+check("INPUT or CURVE - reads stdin: VTK XML if it starts with <?xml or <VTKFile" in help_text
+      and "-o - writes CSV on stdout, and the summary goes to stderr" in help_text, "--help documents - and -o -")
 
 if failures:
     print("\n%d checks FAILED:\n  " % len(failures) + "\n  ".join(failures))
