@@ -728,7 +728,7 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& li
   {
     if (isatty(STDIN_FILENO))
     {
-      throw UsageError("INPUT - reads stdin, which is a terminal: pipe the data in");
+      throw UsageError("- reads stdin, which is a terminal: pipe the data in");
     }
     content.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
   }
@@ -1087,9 +1087,9 @@ void Summarize(vtkPolyData* curve, std::ostream& summary)
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
     }
     summary << LineName(curve, line) << ": " << n << " samples, length "
-              << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
-              << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
-              << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
+            << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
+            << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
+            << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
   }
 }
 
