@@ -298,6 +298,8 @@ for words, reason in write_cases:
 code, out, err = run("fit", helix_vtp, "-o", os.path.join(missing_dir, "x.vtp"))
 check(out == "" and not os.path.exists(missing_dir), "an unwritable output is refused before the fit",
       repr(out))
+if os.path.exists(temp("never.txt")):  # left by an earlier run
+    os.remove(temp("never.txt"))
 code, out, err = run("fit", helix_vtp, "-o", temp("never.txt"))
 check(code == 1 and not os.path.exists(temp("never.txt")), "a refused output is never created")
 
@@ -321,6 +323,9 @@ repeated = [
     (("audit", helix_vtp, "-q", "--quiet"), "--quiet is given twice"),
 ]
 for words, message in repeated:
+    for name in ("rep-a.vtp", "rep-b.vtp"):  # left by an earlier run
+        if os.path.exists(temp(name)):
+            os.remove(temp(name))
     code, out, err = run(*words)
     check(code == 1 and message in err and "give each option once" in err and out == ""
           and not os.path.exists(temp("rep-a.vtp")) and not os.path.exists(temp("rep-b.vtp")),
@@ -493,6 +498,8 @@ check(all(rule in help_text for rule in rules), "--help states the CSV rules",
 # A curve audited against data it was not fitted to is an error, never "-1 violations".
 akima_vtp = os.path.join(args.data, "akima.vtp")
 code, out, err = run("fit", helix_vtp, "-o", temp("helix-curve.vtp"), "-q")
+if os.path.exists(temp("mismatch.csv")):  # left by an earlier run
+    os.remove(temp("mismatch.csv"))
 code, out, err = run("audit", akima_vtp, temp("helix-curve.vtp"), "-o", temp("mismatch.csv"))
 check(code == 1 and "CURVE %s does not match INPUT %s (line 0: the curve's spans or closure differ"
       % (temp("helix-curve.vtp"), akima_vtp) in err and "curve: not audited (it does not match the data)" in out
