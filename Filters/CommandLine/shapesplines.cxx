@@ -76,9 +76,9 @@ the line ids and any others, which become point arrays (name_0, name_1, ... in
 adjacent columns are the components of one array); names are compared without
 case and may not repeat. The line ids are in the column --line-column names,
 else in the one named line_id, line, lineid, id, cell, cell_id, track or
-streamline (line_id before the others; two others are an error). Consecutive
-rows with the same id form a polyline, kept with its id (cell array LineId);
-the rows of a line are consecutive; without line ids the file is one polyline.
+streamline (line_id before the others; two others are an error). The rows with
+the same id form a polyline, in file order (they need not be consecutive), and
+it keeps its id (cell array LineId); without line ids the file is one polyline.
 Without a header a CSV has 3 columns (x,y,z) or 4 (x,y,z,line_id). Every row
 has as many fields as the header (or the first row). A column taken for line
 ids by its name or place that gives every row a line of its own is refused.
@@ -575,8 +575,8 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkDoubleArray> lineIds;
   lineIds->SetName("LineId");
-  std::set<double> endedLines;
-  std::vector<vtkIdType> current;
+  std::map<double, size_t> lineOfId;
+  std::vector<std::vector<vtkIdType>> linePoints; ///< in the order of their first rows
   std::string row;
   std::vector<double> tuple;
   for (int number = 1; std::getline(file, row); ++number)
@@ -642,32 +642,32 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
       }
       array->InsertNextTuple(tuple.data());
     }
+    size_t line = 0;
     if (columns.LineId >= 0)
     {
       const double id = numberAt(columns.LineId);
-      const vtkIdType lineCount = lineIds->GetNumberOfTuples();
-      if (!current.empty() && id != lineIds->GetValue(lineCount - 1))
+      if (!std::isfinite(id))
       {
-        lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
-        endedLines.insert(lineIds->GetValue(lineCount - 1));
-        current.clear();
+        throw std::runtime_error(
+          where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
       }
-      if (current.empty())
+      const auto [found, added] = lineOfId.emplace(id, linePoints.size());
+      if (added)
       {
-        if (!std::isfinite(id) || endedLines.count(id))
-        {
-          throw std::runtime_error(where + "line id " + fields[columns.LineId] +
-            (std::isfinite(id) ? " again, after other lines: the rows of a line must be consecutive"
-                               : ": line ids must be finite numbers"));
-        }
         lineIds->InsertNextValue(id);
       }
+      line = found->second;
     }
-    current.push_back(points->InsertNextPoint(xyz));
+    if (line == linePoints.size())
+    {
+      linePoints.emplace_back();
+    }
+    linePoints[line].push_back(points->InsertNextPoint(xyz));
   }
-  if (!current.empty())
+  // The rows of a line need not be consecutive (tracks interleaved by time).
+  for (const auto& ids : linePoints)
   {
-    lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
   const vtkIdType rows = points->GetNumberOfPoints();
   // A column taken for line ids by its name or place that gives every row its own

@@ -404,6 +404,16 @@ for name in ("line_id", "LINE", "lineid", "Cell", "cell_id", "track", "streamlin
     path = pair_csv("pair-alias.csv", "x,y,z," + name, xyz_id)
     code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
     check_pair("a line id column named %s" % name, code, out, err, temp("pair-out.csv"))
+# A line's rows need not be consecutive: the helices' rows interleaved (tracks by time).
+interleaved = [row for pair in zip(pair_rows[:len(pair_a)], pair_rows[len(pair_a):]) for row in pair]
+write_text("pair-interleaved.csv", "x,y,z,track\n" + "".join(
+    "%r,%r,%r,%d\n" % (p[0], p[1], p[2], k) for p, k in interleaved))
+code, out, err = run("fit", temp("pair-interleaved.csv"), "-o", temp("pair-out.csv"))
+check_pair("interleaved rows of lines 5 and 7 make the same two lines", code, out, err, temp("pair-out.csv"))
+write_text("nan-id.csv", "x,y,z,line_id\n0,0,0,1\n1,0,0,nan\n")
+code, out, err = run("fit", temp("nan-id.csv"), "-o", temp("x.csv"))
+check(code == 1 and "nan-id.csv:3: line id nan: line ids must be finite numbers" in err,
+      "a line id that is not finite is refused", err.strip())
 # Without a header: x,y,z,line_id.
 path = pair_csv("pair-headerless.csv", None, xyz_id)
 code, out, err = run("fit", path, "-o", temp("pair-out.csv"))
@@ -437,8 +447,6 @@ line_id_errors = [
      (), "the column 'id', read as line ids, gives each of its 41 rows a line of its own: if it numbers points"),
     (write_text("twoids.csv", "x,y,z,id,track\n0,0,0,1,1\n"), (),
      "the columns 'id' and 'track' both name line ids: choose one with --line-column"),
-    (write_text("again.csv", "x,y,z,line\n0,0,0,1\n1,0,0,1\n0,1,0,2\n1,1,0,2\n2,0,0,1\n"), (),
-     "again.csv:6: line id 1 again, after other lines: the rows of a line must be consecutive"),
     (pair_csv("pair-ids.csv", "x,y,z,id", xyz_id), ("--line-column", "track"),
      "no column is named 'track' (--line-column); the header names x, y, z, id"),
     (write_text("time.csv", time_rows), ("--line-column", "time"),
