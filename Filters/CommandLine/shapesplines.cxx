@@ -97,8 +97,9 @@ curvature is within rounding of zero left out, spans straying from the data
 counted. audit can only read the written samples: one frame per knot (the span
 that starts there), the output's sampling, no rounding. So each count says
 which it is ("fit's audit", "in the written samples"), and audit also prints
-fit's count when CURVE holds it (.vtp). fit's is the larger where a curve's
-torsion changes sign at a knot (a C2 curve's torsion jumps there).
+fit's count when CURVE holds it (.vtp). fit's counts more at knots: a C2
+curve's torsion jumps there, and the side audit does not see can have the
+wrong sign.
 
 Options of fit:
   --family NAME          spline family (default cubic):
