@@ -16,7 +16,10 @@
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkExecutive.h"
 #include "vtkIntArray.h"
+#include "vtkLogger.h"
 #include "vtkNew.h"
 #include "vtkOutputWindow.h"
 #include "vtkPointData.h"
@@ -29,8 +32,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -51,23 +56,50 @@ const char* const Usage = R"(shapesplines: shape-preserving spline curves with c
 Usage:
   shapesplines fit INPUT -o OUTPUT [options]
   shapesplines audit INPUT [CURVE] [-o OUTPUT] [--closed]
-  shapesplines --help
+  shapesplines --help | --version
 
 fit: one spline curve per polyline of INPUT, sampled with its exact Frenet frame,
 curvature and signed torsion, audited against the shape of the data (paper 001,
 Definition 1). Prints a summary per line.
 audit: the discrete shape of INPUT's polylines (curvature, torsion, collinear and
 coplanar runs) and, given a CURVE fitted to them by `fit`, where it breaks that
-shape.
+shape. Lines pair in order; a CURVE that does not match INPUT (another number
+of lines, of spans, or closure) is an error.
 
 Files: INPUT and CURVE are .vtp, legacy .vtk or .csv; OUTPUT is .vtp or .csv.
-CSV input: columns x,y,z and an optional fourth column line_id; consecutive
-rows with the same line_id form a polyline, without it the whole file is one
-polyline; # starts a comment. An optional header row names the columns x, y, z,
-line_id and any others, which become point arrays (name_0, name_1, ... are
-the components of one array): a CSV written by fit reads back whole.
-CSV output: a row per sample, line_id then x,y,z then every point array.
-OUTPUT is never INPUT.
+OUTPUT is never INPUT. INPUT or CURVE - reads stdin: VTK XML if it starts with
+<?xml or <VTKFile, legacy VTK if with # vtk DataFile, else CSV. -o - writes CSV
+on stdout, and the summary goes to stderr (a .vtp is written to a file).
+CSV input: a row per point; # starts a comment, blank rows are skipped. A first
+row whose first field is not a number is a header naming the columns: x, y, z,
+the line ids and any others, which become point arrays (name_0, name_1, ... in
+adjacent columns are the components of one array); names are compared without
+case and may not repeat. The line ids are in the column --line-column names,
+else in the one named line_id, line, lineid, id, cell, cell_id, track or
+streamline (line_id before the others; two others are an error). The rows with
+the same id form a polyline, in file order (they need not be consecutive), and
+it keeps its id (cell array LineId); without line ids the file is one polyline.
+Without a header a CSV has 3 columns (x,y,z) or 4 (x,y,z,line_id). Every row
+has as many fields as the header (or the first row). A column taken for line
+ids by its name or place that gives every row a line of its own is refused.
+CSV dialect: UTF-8 (a byte order mark is skipped) or ASCII, LF or CRLF line
+ends; the separator is a tab if the first row has one, else ';' if it has one,
+else ','; a field may be in double quotes, and may then hold the separator and
+#, with "" for a quote; blanks around a field are ignored; numbers have a
+decimal point, not a comma.
+CSV output: a row per sample, line_id (the input's, else the line's place)
+then x,y,z then every point array: a CSV written by fit reads back whole.
+
+Shape violations (paper 001, Definition 1): fit counts them in its own audit of
+each curve, the curve's cell array ShapeViolations: 16 samples a span whatever
+the output's sampling, each knot seen from both of its spans, samples whose
+curvature is within rounding of zero left out, spans straying from the data
+counted. audit can only read the written samples: one frame per knot (the span
+that starts there), the output's sampling, no rounding. So each count says
+which it is ("fit's audit", "in the written samples"), and audit also prints
+fit's count when CURVE holds it (.vtp). fit's counts more at knots: a C2
+curve's torsion jumps there, and the side audit does not see can have the
+wrong sign.
 
 Options of fit:
   --family NAME          spline family (default cubic):
@@ -109,13 +141,20 @@ Options of fit:
   --data-tolerance E     shape tolerance epsilon_1 on the data (default 1e-6)
   --curve-tolerance E    shape tolerance epsilon_2 on the curve (default 1e-3)
 Common options:
-  -o, --output OUTPUT    output file (required for fit)
+  -o, --output OUTPUT    output file (required for fit), - for CSV on stdout
+  --line-column NAME     CSV INPUT: the column of line ids (see above)
   -q, --quiet            no summary and no progress bar
   -h, --help             this text
+  --version              the version of shapesplines
+Each option may be given once.
 
-Exit status: 0 on success, 1 on bad usage or unreadable input, 2 when the
-filter reported errors (lines skipped: see the messages).
+Exit status: 0 on success, 1 on bad usage, unreadable input, a CURVE that does
+not match INPUT, or an output that cannot be written (checked before any work,
+and again when written), 2 when the filter reported errors (lines skipped: see
+the messages).
 )";
+
+const char* const Version = "shapesplines " SHAPESPLINES_VERSION "\n";
 
 struct UsageError : std::runtime_error
 {
@@ -194,8 +233,10 @@ struct Arguments
 
 const std::set<std::string> ValueOptions = { "output", "family", "end-condition", "kind",
   "tension", "max-tension", "continuity", "mode", "knots", "gamma", "lambda", "degree",
-  "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length", "data-tolerance", "curve-tolerance" };
-const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters", "quiet", "help" };
+  "max-degree", "alpha", "beta", "max-alpha", "z", "parameterization", "samples", "arc-length",
+  "data-tolerance", "curve-tolerance", "line-column" };
+const std::set<std::string> FlagOptions = { "closed", "vmtk-names", "fixed", "keep-parameters",
+  "quiet", "help", "version" };
 
 Arguments Parse(int argc, char* argv[])
 {
@@ -210,6 +251,14 @@ Arguments Parse(int argc, char* argv[])
     else if (word == "-q")
     {
       word = "--quiet";
+    }
+    else if (word == "-h")
+    {
+      word = "--help";
+    }
+    if (word.size() > 1 && word[0] == '-' && word[1] != '-')
+    {
+      throw UsageError("unknown option " + word);
     }
     if (word.rfind("--", 0) != 0 || word.size() == 2)
     {
@@ -236,25 +285,141 @@ Arguments Parse(int argc, char* argv[])
       }
       value = argv[++i];
     }
-    args.Options[name] = value;
+    // A repeated option is a mistake whichever one was meant: -o a -o b.
+    const auto [previous, added] = args.Options.emplace(name, value);
+    if (!added)
+    {
+      throw UsageError("--" + name + " is given twice" +
+        (ValueOptions.count(name) ? " ('" + previous->second + "' and '" + value + "')" : "") +
+        ": give each option once");
+    }
   }
   return args;
 }
 
 // --------------------------------------------------------------------------- files
 
-/// Splits a CSV row on commas (and surrounding blanks).
-std::vector<std::string> Fields(const std::string& row)
+/// A VTK message without its origin: VTK's text reads
+/// "Warning: In file, line N\nclass (address): message\n\n".
+std::string MessageText(const char* text)
+{
+  std::string message = text;
+  const size_t origin = message.find("): ");
+  if (origin != std::string::npos)
+  {
+    message = message.substr(origin + 3);
+  }
+  message.erase(message.find_last_not_of("\n") + 1);
+  return message;
+}
+
+/// The errors of a reader or writer and its pipeline, kept for one message of ours
+/// instead of VTK's log lines.
+struct FileErrors
+{
+  explicit FileErrors(vtkAlgorithm* algorithm)
+  {
+    this->Callback->SetClientData(this);
+    this->Callback->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+      auto* errors = static_cast<FileErrors*>(self);
+      if (errors->First.empty())
+      {
+        errors->First = MessageText(static_cast<const char*>(text));
+      }
+    });
+    algorithm->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+    algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Callback);
+  }
+
+  vtkNew<vtkCallbackCommand> Callback;
+  std::string First;
+};
+
+/// Column names that hold line ids, compared without case (--line-column names another).
+const std::vector<std::string> LineIdNames = { "line_id", "line", "lineid", "id", "cell",
+  "cell_id", "track", "streamline" };
+
+std::string Trim(const std::string& text)
+{
+  const size_t first = text.find_first_not_of(" \t\r");
+  const size_t last = text.find_last_not_of(" \t\r");
+  return first == std::string::npos ? "" : text.substr(first, last - first + 1);
+}
+
+std::string Join(const std::vector<std::string>& names)
+{
+  std::string text;
+  for (const std::string& name : names)
+  {
+    text += (text.empty() ? "" : ", ") + name;
+  }
+  return text;
+}
+
+/// A CSV's separator, from its first row: a tab if the row has one outside double
+/// quotes, else ';' if it has one, else ','.
+char Separator(const std::string& row)
+{
+  bool quoted = false;
+  bool semicolon = false;
+  for (const char c : row)
+  {
+    if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (!quoted && c == '#')
+    {
+      break;
+    }
+    else if (!quoted && c == '\t')
+    {
+      return '\t';
+    }
+    semicolon = semicolon || (!quoted && c == ';');
+  }
+  return semicolon ? ';' : ',';
+}
+
+/// Splits a CSV row into fields, up to a # outside double quotes (a comment). A
+/// double-quoted field may hold the separator and #, and "" for a quote; blanks
+/// around a field are dropped.
+std::vector<std::string> Fields(const std::string& row, char separator, const std::string& where)
 {
   std::vector<std::string> fields;
-  std::stringstream stream(row);
   std::string field;
-  while (std::getline(stream, field, ','))
+  bool quoted = false;
+  for (size_t i = 0; i < row.size(); ++i)
   {
-    const size_t first = field.find_first_not_of(" \t\r");
-    const size_t last = field.find_last_not_of(" \t\r");
-    fields.push_back(first == std::string::npos ? "" : field.substr(first, last - first + 1));
+    const char c = row[i];
+    if (quoted && c == '"' && i + 1 < row.size() && row[i + 1] == '"')
+    {
+      field += '"';
+      ++i;
+    }
+    else if (c == '"')
+    {
+      quoted = !quoted;
+    }
+    else if (!quoted && c == separator)
+    {
+      fields.push_back(Trim(field));
+      field.clear();
+    }
+    else if (!quoted && c == '#')
+    {
+      break;
+    }
+    else
+    {
+      field += c;
+    }
   }
+  if (quoted)
+  {
+    throw std::runtime_error(where + "a double quote is not closed (a field cannot span rows)");
+  }
+  fields.push_back(Trim(field));
   return fields;
 }
 
@@ -272,128 +437,261 @@ bool ParseNumber(const std::string& text, double& value)
   return end == text.size();
 }
 
-/// The columns of a CSV header: x, y, z, line_id, and point arrays (name or name_0, name_1, ...).
+/// What the columns of a CSV hold: x, y, z, line ids and point arrays (name or
+/// name_0, name_1, ... for the components of one array).
 struct CsvColumns
 {
-  std::array<int, 4> Position = { 0, 1, 2, 3 }; ///< x, y, z, line_id; -1 if absent
-  std::vector<std::pair<vtkSmartPointer<vtkDoubleArray>, int>> Arrays; ///< and first column
+  std::vector<std::string> Names;            ///< x, y, z[, line_id] without a header
+  bool Header = false;
+  std::array<size_t, 3> Position = { 0, 1, 2 }; ///< of x, y and z
+  int LineId = -1;                           ///< the column of line ids, -1 if none
+  bool LineIdGuessed = false;                ///< by its name or place, not --line-column
+  std::vector<std::pair<vtkSmartPointer<vtkDoubleArray>, size_t>> Arrays; ///< and first column
 };
 
-CsvColumns HeaderColumns(const std::vector<std::string>& fields)
+CsvColumns HeaderColumns(
+  const std::vector<std::string>& names, const std::string& lineColumn, const std::string& where)
 {
   CsvColumns columns;
-  columns.Position = { -1, -1, -1, -1 };
-  const std::vector<std::string> names = { "x", "y", "z", "line_id" };
-  for (size_t f = 0; f < fields.size(); ++f)
+  columns.Names = names;
+  columns.Header = true;
+  std::array<int, 3> axes = { -1, -1, -1 };
+  std::vector<size_t> lineIdColumns;
+  std::map<std::string, size_t> seen;
+  for (size_t f = 0; f < names.size(); ++f)
   {
-    const auto name = std::find(names.begin(), names.end(), Lower(fields[f]));
-    if (name != names.end())
+    const std::string name = Lower(names[f]);
+    if (name.empty())
     {
-      columns.Position[name - names.begin()] = static_cast<int>(f);
+      throw std::runtime_error(
+        where + "column " + std::to_string(f + 1) + " of the header has no name");
+    }
+    const auto [previous, added] = seen.emplace(name, f);
+    if (!added)
+    {
+      throw std::runtime_error(where + "the header names '" + names[f] + "' twice (columns " +
+        std::to_string(previous->second + 1) + " and " + std::to_string(f + 1) +
+        "; names are compared without case)");
+    }
+    if (name == "x" || name == "y" || name == "z")
+    {
+      axes[name[0] - 'x'] = static_cast<int>(f);
+    }
+    else if (lineColumn.empty()
+        ? std::count(LineIdNames.begin(), LineIdNames.end(), name) > 0
+        : name == Lower(lineColumn))
+    {
+      lineIdColumns.push_back(f);
+    }
+  }
+  if (std::count(axes.begin(), axes.end(), -1) > 0)
+  {
+    throw std::runtime_error(
+      where + "the header must name the columns x, y and z; it names " + Join(names));
+  }
+  if (!lineColumn.empty() && lineIdColumns.empty())
+  {
+    throw std::runtime_error(where + "no column is named '" + lineColumn +
+      "' (--line-column); the header names " + Join(names));
+  }
+  // line_id, the name fit writes, before the others: a curve's CSV always reads back.
+  const auto canonical = std::find_if(lineIdColumns.begin(), lineIdColumns.end(),
+    [&](size_t f) { return Lower(names[f]) == LineIdNames[0]; });
+  if (canonical != lineIdColumns.end())
+  {
+    lineIdColumns = { *canonical };
+  }
+  if (lineIdColumns.size() > 1)
+  {
+    throw std::runtime_error(where + "the columns '" + names[lineIdColumns[0]] + "' and '" +
+      names[lineIdColumns[1]] + "' both name line ids: choose one with --line-column");
+  }
+  std::copy(axes.begin(), axes.end(), columns.Position.begin());
+  columns.LineId = lineIdColumns.empty() ? -1 : static_cast<int>(lineIdColumns[0]);
+  columns.LineIdGuessed = lineColumn.empty();
+  for (size_t f = 0; f < names.size(); ++f)
+  {
+    if (std::count(axes.begin(), axes.end(), static_cast<int>(f)) > 0 ||
+      static_cast<int>(f) == columns.LineId)
+    {
       continue;
     }
-    // name_0, name_1, ... are the components of one array.
-    const size_t underscore = fields[f].rfind('_');
-    const std::string base = underscore == std::string::npos ? "" : fields[f].substr(0, underscore);
+    // name_0, name_1, ... in adjacent columns are the components of one array.
+    const size_t underscore = names[f].rfind('_');
+    const std::string base = underscore == std::string::npos ? "" : names[f].substr(0, underscore);
     const std::string component =
-      underscore == std::string::npos ? "" : fields[f].substr(underscore + 1);
-    if (!columns.Arrays.empty() && !base.empty() &&
-      base == columns.Arrays.back().first->GetName() &&
-      component == std::to_string(columns.Arrays.back().first->GetNumberOfComponents()))
+      underscore == std::string::npos ? "" : names[f].substr(underscore + 1);
+    if (!columns.Arrays.empty() && !base.empty())
     {
-      auto& array = columns.Arrays.back().first;
-      array->SetNumberOfComponents(array->GetNumberOfComponents() + 1);
-      continue;
+      auto& [array, start] = columns.Arrays.back();
+      const int components = array->GetNumberOfComponents();
+      if (base == array->GetName() && component == std::to_string(components) &&
+        f == start + components)
+      {
+        array->SetNumberOfComponents(components + 1);
+        continue;
+      }
     }
     auto array = vtkSmartPointer<vtkDoubleArray>::New();
-    array->SetName(component == "0" ? base.c_str() : fields[f].c_str());
-    columns.Arrays.emplace_back(array, static_cast<int>(f));
+    array->SetName(component == "0" ? base.c_str() : names[f].c_str());
+    columns.Arrays.emplace_back(array, f);
   }
   return columns;
 }
 
-vtkSmartPointer<vtkPolyData> ReadCsv(const std::string& path)
+/// Without a header a CSV holds x,y,z or x,y,z,line_id: anything else needs names.
+CsvColumns HeaderlessColumns(size_t count, const std::string& lineColumn, const std::string& where)
 {
-  std::ifstream file(path);
-  if (!file)
+  if (!lineColumn.empty())
   {
-    throw std::runtime_error("cannot open " + path);
+    throw std::runtime_error(where + "--line-column " + lineColumn +
+      " needs a header row naming the columns, and this CSV has none");
+  }
+  if (count != 3 && count != 4)
+  {
+    throw std::runtime_error(where + "this row has " + std::to_string(count) +
+      " fields, and without a header a CSV has 3 (x,y,z) or 4 (x,y,z,line_id): add a header "
+      "row naming the columns, e.g. x,y,z,line_id,radius (names other than x, y, z and the "
+      "line id become point arrays)");
   }
   CsvColumns columns;
+  columns.Names = { "x", "y", "z" };
+  if (count == 4)
+  {
+    columns.Names.emplace_back("line_id");
+    columns.LineId = 3;
+    columns.LineIdGuessed = true;
+  }
+  return columns;
+}
+
+vtkSmartPointer<vtkPolyData> ReadCsv(
+  std::istream& file, const std::string& name, const std::string& lineColumn)
+{
+  CsvColumns columns;
+  char separator = ',';
+  bool first = true;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
-  std::vector<vtkIdType> current;
-  double currentLine = std::numeric_limits<double>::quiet_NaN();
-  bool hasLineIds = false;
-  bool first = true;
+  vtkNew<vtkDoubleArray> lineIds;
+  lineIds->SetName("LineId");
+  std::map<double, size_t> lineOfId;
+  std::vector<std::vector<vtkIdType>> linePoints; ///< in the order of their first rows
   std::string row;
   std::vector<double> tuple;
   for (int number = 1; std::getline(file, row); ++number)
   {
-    const std::string content = row.substr(0, row.find('#'));
-    if (content.find_first_not_of(" \t\r") == std::string::npos)
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
     {
-      continue;
+      throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
     }
-    const std::vector<std::string> fields = Fields(content);
-    const std::string where = path + ":" + std::to_string(number) + ": ";
-    double value;
-    if (first && !ParseNumber(fields[0], value))
+    if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
     {
-      columns = HeaderColumns(fields);
-      if (columns.Position[0] < 0 || columns.Position[1] < 0 || columns.Position[2] < 0)
-      {
-        throw std::runtime_error(where + "the header must name the columns x, y and z");
-      }
-      hasLineIds = columns.Position[3] >= 0;
-      first = false;
-      continue;
+      row.erase(0, 3); // the UTF-8 byte order mark some editors write
+    }
+    if (!row.empty() && row.back() == '\r')
+    {
+      row.pop_back();
     }
     if (first)
     {
-      hasLineIds = fields.size() >= 4;
-      first = false;
+      separator = Separator(row);
     }
-    double xyzl[4] = { 0, 0, 0, 0 };
-    for (int c = 0; c < (hasLineIds ? 4 : 3); ++c)
+    const std::vector<std::string> fields = Fields(row, separator, where);
+    if (fields.size() == 1 && fields[0].empty())
     {
-      const int column = columns.Position[c];
-      if (column >= static_cast<int>(fields.size()) || !ParseNumber(fields[column], xyzl[c]))
-      {
-        throw std::runtime_error(where + "expected numbers x,y,z" +
-          (hasLineIds ? ",line_id" : "") + ", got '" + content + "'");
-      }
+      continue;
     }
+    double value;
+    if (first)
+    {
+      first = false;
+      if (!ParseNumber(fields[0], value))
+      {
+        columns = HeaderColumns(fields, lineColumn, where);
+        continue;
+      }
+      columns = HeaderlessColumns(fields.size(), lineColumn, where);
+    }
+    if (fields.size() != columns.Names.size())
+    {
+      throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
+        " fields, " + (columns.Header ? "the header names " : "the first row has ") +
+        std::to_string(columns.Names.size()));
+    }
+    const auto numberAt = [&](size_t column) {
+      double parsed;
+      if (!ParseNumber(fields[column], parsed))
+      {
+        const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
+        throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
+          columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
+          (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
+      }
+      return parsed;
+    };
+    const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
+      numberAt(columns.Position[2]) };
     for (auto& [array, column] : columns.Arrays)
     {
       tuple.resize(array->GetNumberOfComponents());
       for (size_t c = 0; c < tuple.size(); ++c)
       {
-        const size_t at = column + c;
-        if (at >= fields.size() || !ParseNumber(fields[at], tuple[c]))
-        {
-          throw std::runtime_error(where + "expected a number in column " +
-            std::to_string(at + 1) + " (" + array->GetName() + "), got '" + content + "'");
-        }
+        tuple[c] = numberAt(column + c);
       }
       array->InsertNextTuple(tuple.data());
     }
-    if (!current.empty() && hasLineIds && xyzl[3] != currentLine)
+    size_t line = 0;
+    if (columns.LineId >= 0)
     {
-      lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
-      current.clear();
+      const double id = numberAt(columns.LineId);
+      if (!std::isfinite(id))
+      {
+        throw std::runtime_error(
+          where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
+      }
+      const auto [found, added] = lineOfId.emplace(id, linePoints.size());
+      if (added)
+      {
+        lineIds->InsertNextValue(id);
+      }
+      line = found->second;
     }
-    currentLine = xyzl[3];
-    current.push_back(points->InsertNextPoint(xyzl));
+    if (line == linePoints.size())
+    {
+      linePoints.emplace_back();
+    }
+    linePoints[line].push_back(points->InsertNextPoint(xyz));
   }
-  if (!current.empty())
+  // The rows of a line need not be consecutive (tracks interleaved by time).
+  for (const auto& ids : linePoints)
   {
-    lines->InsertNextCell(static_cast<vtkIdType>(current.size()), current.data());
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  const vtkIdType rows = points->GetNumberOfPoints();
+  // A column taken for line ids by its name or place that gives every row its own
+  // line numbers points or times, not lines: nothing could be fitted.
+  if (columns.LineIdGuessed && rows > 1 && lines->GetNumberOfCells() == rows)
+  {
+    const std::string column = columns.Names[columns.LineId];
+    throw std::runtime_error(name + ": " +
+      (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
+      ", read as line ids, gives each of its " + std::to_string(rows) +
+      " rows a line of its own: " +
+      (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
+                        "arrays), or name the line id column with --line-column"
+                      : "if it is not a line id, add a header row naming the columns, e.g. "
+                        "x,y,z,time"));
   }
   auto data = vtkSmartPointer<vtkPolyData>::New();
   data->SetPoints(points);
   data->SetLines(lines);
+  if (columns.LineId >= 0)
+  {
+    data->GetCellData()->AddArray(lineIds);
+  }
   for (const auto& column : columns.Arrays)
   {
     data->GetPointData()->AddArray(column.first);
@@ -401,34 +699,106 @@ vtkSmartPointer<vtkPolyData> ReadCsv(const std::string& path)
   return data;
 }
 
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+/// The format of what stdin holds: VTK XML or legacy VTK by their first words, else CSV.
+std::string StandardInputFormat(const std::string& content)
 {
-  if (!std::filesystem::is_regular_file(path))
+  const size_t bom = content.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;
+  const size_t start = std::min(content.find_first_not_of(" \t\r\n", bom), content.size());
+  const auto startsWith = [&](const char* word) {
+    return content.compare(start, std::strlen(word), word) == 0;
+  };
+  return startsWith("<?xml") || startsWith("<VTKFile") ? ".vtp"
+    : startsWith("# vtk DataFile")                     ? ".vtk"
+                                                       : ".csv";
+}
+
+/// How messages name an INPUT or CURVE: "-" is stdin.
+std::string InputName(const std::string& path)
+{
+  return path == "-" ? "stdin" : path;
+}
+
+/// Reads a .vtp, legacy .vtk or .csv file, or stdin for "-" (see StandardInputFormat);
+/// lineColumn names a CSV's line id column.
+vtkSmartPointer<vtkPolyData> Read(const std::string& path, const std::string& lineColumn = "")
+{
+  const bool standardInput = path == "-";
+  const std::string name = InputName(path);
+  std::string content;
+  if (standardInput)
+  {
+    if (isatty(STDIN_FILENO))
+    {
+      throw UsageError("- reads stdin, which is a terminal: pipe the data in");
+    }
+    content.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+  }
+  else if (!std::filesystem::is_regular_file(path))
   {
     throw std::runtime_error("no such file: " + path);
   }
-  const std::string extension = Extension(path);
-  if (extension == ".csv")
+  const std::string extension = standardInput ? StandardInputFormat(content) : Extension(path);
+  if (!lineColumn.empty() && extension != ".csv")
   {
-    return ReadCsv(path);
+    throw UsageError("--line-column names a column of a CSV INPUT, and " + name + " is not one");
   }
   vtkSmartPointer<vtkPolyData> data;
-  if (extension == ".vtp")
+  if (extension == ".csv" && standardInput)
+  {
+    std::istringstream stream(content);
+    data = ReadCsv(stream, name, lineColumn);
+  }
+  else if (extension == ".csv")
+  {
+    std::ifstream file(path);
+    if (!file)
+    {
+      throw std::runtime_error("cannot open " + path);
+    }
+    data = ReadCsv(file, path, lineColumn);
+  }
+  else if (extension == ".vtp")
   {
     vtkNew<vtkXMLPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
+    if (standardInput)
+    {
+      reader->ReadFromInputStringOn();
+      reader->SetInputString(content);
+    }
+    else
+    {
+      reader->SetFileName(path.c_str());
+    }
+    FileErrors errors(reader);
     reader->Update();
+    if (!errors.First.empty())
+    {
+      throw std::runtime_error("cannot read " + name + ": " + errors.First);
+    }
     data = reader->GetOutput();
   }
   else if (extension == ".vtk")
   {
     vtkNew<vtkPolyDataReader> reader;
-    reader->SetFileName(path.c_str());
+    if (standardInput)
+    {
+      reader->ReadFromInputStringOn();
+      reader->SetInputString(content.data(), static_cast<int>(content.size()));
+    }
+    else
+    {
+      reader->SetFileName(path.c_str());
+    }
+    FileErrors errors(reader);
     if (!reader->IsFilePolyData())
     {
-      throw std::runtime_error(path + " is not a legacy VTK poly data file");
+      throw std::runtime_error(name + " is not a legacy VTK poly data file");
     }
     reader->Update();
+    if (!errors.First.empty())
+    {
+      throw std::runtime_error("cannot read " + name + ": " + errors.First);
+    }
     data = reader->GetOutput();
   }
   else
@@ -438,18 +808,74 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& path)
   }
   if (!data || data->GetNumberOfPoints() == 0)
   {
-    throw std::runtime_error("no points read from " + path);
+    throw std::runtime_error("no points read from " + name);
   }
   return data;
 }
 
-void WriteCsv(vtkPolyData* data, const std::string& path)
+/// Why the last system call failed, in the system's words.
+std::string SystemError()
 {
-  std::ofstream file(path);
-  if (!file)
+  return errno != 0 ? std::strerror(errno) : "unknown error";
+}
+
+/// Refuses an output that cannot be written before any work is done, so that a
+/// long fit does not end in "cannot write". A file made to find out is removed.
+void CheckWritable(const std::string& path)
+{
+  if (path == "-")
   {
-    throw std::runtime_error("cannot write " + path);
+    return; // stdout: a write error is found when written
   }
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+  {
+    throw std::runtime_error("cannot write " + path + ": it is a directory");
+  }
+  const std::string extension = Extension(path);
+  if (extension != ".csv" && extension != ".vtp")
+  {
+    throw UsageError("cannot write '" + extension + "' files (" + path + "): use .vtp or .csv");
+  }
+  const bool existed = std::filesystem::exists(path, error);
+  errno = 0;
+  std::ofstream probe(path, std::ios::app);
+  if (!probe)
+  {
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
+  }
+  probe.close();
+  if (!existed)
+  {
+    std::filesystem::remove(path, error);
+  }
+}
+
+/// A name as a CSV field: double-quoted when it holds a separator, a quote or #.
+std::string CsvField(const std::string& name)
+{
+  if (name.find_first_of(",;\t\"#") == std::string::npos)
+  {
+    return name;
+  }
+  std::string quoted = "\"";
+  for (const char c : name)
+  {
+    quoted += c == '"' ? "\"\"" : std::string(1, c);
+  }
+  return quoted + "\"";
+}
+
+/// A line's id: its LineId (from the input), else its place among the lines.
+double LineIdOf(vtkPolyData* data, vtkIdType line)
+{
+  vtkDataArray* ids = data->GetCellData()->GetArray("LineId");
+  // Cell ids count the vertices first.
+  return ids ? ids->GetComponent(data->GetNumberOfVerts() + line, 0) : static_cast<double>(line);
+}
+
+void WriteCsv(vtkPolyData* data, std::ostream& file)
+{
   file.precision(17);
   std::vector<vtkDataArray*> arrays;
   file << "line_id,x,y,z";
@@ -465,7 +891,7 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
     const int components = array->GetNumberOfComponents();
     for (int c = 0; c < components; ++c)
     {
-      file << ',' << array->GetName() << (components > 1 ? "_" + std::to_string(c) : "");
+      file << ',' << CsvField(array->GetName() + (components > 1 ? "_" + std::to_string(c) : ""));
     }
   }
   file << '\n';
@@ -485,7 +911,7 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
     {
       double p[3];
       data->GetPoint(ids[k], p);
-      file << line << ',' << p[0] << ',' << p[1] << ',' << p[2];
+      file << LineIdOf(data, line) << ',' << p[0] << ',' << p[1] << ',' << p[2];
       for (vtkDataArray* array : arrays)
       {
         for (int c = 0; c < array->GetNumberOfComponents(); ++c)
@@ -496,37 +922,60 @@ void WriteCsv(vtkPolyData* data, const std::string& path)
       file << '\n';
     }
   }
-  if (!file)
-  {
-    throw std::runtime_error("error while writing " + path);
-  }
 }
 
+/// Writes a .vtp or .csv file, or CSV on stdout for "-".
 void Write(vtkPolyData* data, const std::string& path)
 {
-  const std::string extension = Extension(path);
-  if (extension == ".csv")
+  if (path == "-")
   {
-    WriteCsv(data, path);
+    errno = 0;
+    WriteCsv(data, std::cout);
+    std::cout.flush();
+    if (!std::cout)
+    {
+      throw std::runtime_error("cannot write stdout: " + SystemError());
+    }
     return;
   }
-  if (extension != ".vtp")
+  if (Extension(path) == ".csv")
   {
-    throw UsageError("cannot write '" + extension + "' files (" + path + "): use .vtp or .csv");
+    errno = 0;
+    std::ofstream file(path);
+    if (!file)
+    {
+      throw std::runtime_error("cannot write " + path + ": " + SystemError());
+    }
+    WriteCsv(data, file);
+    // The last rows reach the disk only when the file is closed.
+    file.close();
+    if (!file)
+    {
+      throw std::runtime_error("cannot write " + path + ": " + SystemError());
+    }
+    return;
   }
   vtkNew<vtkXMLPolyDataWriter> writer;
   writer->SetFileName(path.c_str());
   writer->SetInputData(data);
   writer->SetDataModeToBinary();
-  if (writer->Write() != 1)
+  // Its messages would say in VTK's words what ours says.
+  FileErrors errors(writer);
+  errno = 0;
+  writer->Write();
+  if (writer->GetErrorCode() != vtkErrorCode::NoError)
   {
-    throw std::runtime_error("cannot write " + path);
+    throw std::runtime_error("cannot write " + path + ": " + SystemError());
   }
 }
 
 /// The output must not be one of the inputs.
 void CheckNotAnInput(const std::string& output, const std::vector<std::string>& inputs)
 {
+  if (output == "-")
+  {
+    return; // stdout
+  }
   for (const std::string& input : inputs)
   {
     std::error_code error;
@@ -549,15 +998,8 @@ struct MessageCounter
       auto* counter = static_cast<MessageCounter*>(self);
       const bool error = event == vtkCommand::ErrorEvent;
       (error ? counter->Errors : counter->Warnings)++;
-      // VTK's text reads "Warning: In file, line N\nclass (address): message\n\n".
-      std::string message = static_cast<const char*>(text);
-      const size_t origin = message.find("): ");
-      if (origin != std::string::npos)
-      {
-        message = message.substr(origin + 3);
-      }
-      message.erase(message.find_last_not_of("\n") + 1);
-      std::cerr << (error ? "error: " : "warning: ") << message << '\n';
+      std::cerr << (error ? "error: " : "warning: ") << MessageText(static_cast<const char*>(text))
+                << '\n';
     });
     for (vtkObject* object : objects)
     {
@@ -589,14 +1031,47 @@ void ShowProgress(vtkAlgorithm* algorithm)
   algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
 }
 
+/// How the summaries name a line: by its id (see LineIdOf), "line 5".
+std::string LineName(vtkPolyData* data, vtkIdType line)
+{
+  std::ostringstream text;
+  text.precision(17);
+  text << "line " << LineIdOf(data, line);
+  return text.str();
+}
+
 double CellValue(vtkPolyData* data, const char* name, vtkIdType cell)
 {
   vtkDataArray* array = data->GetCellData()->GetArray(name);
   return array ? array->GetComponent(cell, 0) : std::numeric_limits<double>::quiet_NaN();
 }
 
+/// "[min, max]" of the values at the ids the data define (all when defined is empty), or
+/// "undefined": the data's range, never widened to 0.
+std::string RangeText(vtkDataArray* array, const vtkIdType* ids, vtkIdType n,
+  const std::function<bool(vtkIdType)>& defined = {})
+{
+  double lo = std::numeric_limits<double>::infinity();
+  double hi = -lo;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    if (!defined || defined(ids[k]))
+    {
+      lo = std::min(lo, array->GetComponent(ids[k], 0));
+      hi = std::max(hi, array->GetComponent(ids[k], 0));
+    }
+  }
+  if (!(lo <= hi))
+  {
+    return "undefined";
+  }
+  std::ostringstream text;
+  text << "[" << lo << ", " << hi << "]";
+  return text.str();
+}
+
 /// One line per output line: samples, length, curvature and torsion ranges, violations.
-void Summarize(vtkPolyData* curve)
+void Summarize(vtkPolyData* curve, std::ostream& summary)
 {
   vtkDataArray* curvature = curve->GetPointData()->GetArray("Curvature");
   vtkDataArray* torsion = curve->GetPointData()->GetArray("Torsion");
@@ -608,19 +1083,46 @@ void Summarize(vtkPolyData* curve)
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     double maxCurvature = 0.0;
-    double minTorsion = 0.0;
-    double maxTorsion = 0.0;
     for (vtkIdType k = 0; k < n; ++k)
     {
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-      minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
-      maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
     }
-    std::cout << "line " << line << ": " << n << " samples, length "
-              << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
-              << ", torsion [" << minTorsion << ", " << maxTorsion << "], shape violations "
-              << CellValue(curve, "ShapeViolations", line) << "\n";
+    summary << LineName(curve, line) << ": " << n << " samples, length "
+            << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
+            << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
+            << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
   }
+}
+
+const char* const OutOfRange = "a point id out of range";
+
+/// Why a data line cannot be audited, or "": a point id out of range (checked
+/// first: the others read the points), a point not finite, fewer than two
+/// distinct points (no span).
+std::string DataProblem(vtkPolyData* data, const vtkIdType* ids, vtkIdType n)
+{
+  if (std::any_of(
+        ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= data->GetNumberOfPoints(); }))
+  {
+    return OutOfRange;
+  }
+  double first[3] = { 0, 0, 0 };
+  if (n > 0)
+  {
+    data->GetPoint(ids[0], first);
+  }
+  bool distinct = false;
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    double p[3];
+    data->GetPoint(ids[k], p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return "a point is not finite";
+    }
+    distinct = distinct || p[0] != first[0] || p[1] != first[1] || p[2] != first[2];
+  }
+  return distinct ? "" : "fewer than two distinct points";
 }
 
 // --------------------------------------------------------------------------- commands
@@ -788,13 +1290,15 @@ int Fit(Arguments& args)
   {
     filter->SetNumberOfSubdivisions(static_cast<int>(args.Number("samples", 10, 1, 100000)));
   }
+  const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
+  CheckWritable(output);
 
-  vtkSmartPointer<vtkPolyData> data = Read(input);
+  vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
   if (data->GetNumberOfLines() == 0)
   {
-    throw std::runtime_error(input + " has no lines (polyline cells) to fit");
+    throw std::runtime_error(InputName(input) + " has no lines (polyline cells) to fit");
   }
   MessageCounter messages({ filter });
   if (!quiet)
@@ -807,9 +1311,12 @@ int Fit(Arguments& args)
   Write(curve, output);
   if (!quiet)
   {
-    Summarize(curve);
-    std::cout << "wrote " << output << " (" << curve->GetNumberOfLines() << " lines, "
-              << curve->GetNumberOfPoints() << " samples)\n";
+    // With the curve on stdout, the summary goes to stderr.
+    std::ostream& summary = output == "-" ? std::cerr : std::cout;
+    Summarize(curve, summary);
+    summary << "wrote " << (output == "-" ? "stdout" : output) << " ("
+            << curve->GetNumberOfLines() << " lines, " << curve->GetNumberOfPoints()
+            << " samples)\n";
   }
   return messages.Errors > 0 ? 2 : 0;
 }
@@ -820,6 +1327,10 @@ int Audit(Arguments& args)
   {
     throw UsageError("audit takes INPUT and optionally CURVE");
   }
+  if (std::count(args.Positional.begin(), args.Positional.end(), "-") > 1)
+  {
+    throw UsageError("INPUT and CURVE cannot both be - (stdin)");
+  }
   const std::string output = args.Value("output", "");
   if (!output.empty())
   {
@@ -829,82 +1340,137 @@ int Audit(Arguments& args)
   analysis->SetClosed(args.Flag("closed"));
   analysis->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
   analysis->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
+  if (!output.empty())
+  {
+    CheckWritable(output);
+  }
 
-  analysis->SetInputData(0, Read(args.Positional[0]));
+  const std::string input = args.Positional[0];
+  vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
+  analysis->SetInputData(0, data);
+  vtkSmartPointer<vtkPolyData> curve;
   if (args.Positional.size() == 2)
   {
-    vtkSmartPointer<vtkPolyData> curve = Read(args.Positional[1]);
+    curve = Read(args.Positional[1]);
     for (const char* name : { "SpanIndex", "Tangent", "Binormal", "Curvature", "Torsion" })
     {
       if (!curve->GetPointData()->GetArray(name))
       {
-        throw std::runtime_error(args.Positional[1] + " has no point array " + name +
+        throw std::runtime_error(InputName(args.Positional[1]) + " has no point array " + name +
           ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
       }
+    }
+    // Lines are paired in order: with a line more or less every pair is wrong.
+    if (curve->GetNumberOfLines() != data->GetNumberOfLines())
+    {
+      std::ostringstream message;
+      message << "CURVE " << InputName(args.Positional[1]) << " does not match INPUT "
+              << InputName(input) << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
+              << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
+              << "fitted to; a fit that skipped lines wrote fewer)";
+      throw std::runtime_error(message.str());
     }
     analysis->SetInputData(1, curve);
   }
   MessageCounter messages({ analysis });
   analysis->Update();
   vtkPolyData* result = analysis->GetOutput();
-  if (!quiet)
+  vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
+  vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
+  vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
+  vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
+  // The segments at an open line's ends have no discrete torsion: 0 there, and
+  // not coplanar; a coplanar segment's 0 is the data's.
+  const auto definedTorsion = [&](vtkIdType id) {
+    return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
+  };
+  std::ostream silent(nullptr);
+  // With the result on stdout, the summary goes to stderr.
+  std::ostream& summary = quiet ? silent : output == "-" ? std::cerr : std::cout;
+  std::vector<std::string> unmatched;
+  std::vector<std::string> approximations;
+  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
   {
-    vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
-    vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
-    vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
-    vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
-    auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
-    vtkIdType line = 0;
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const std::string problem = DataProblem(result, ids, n);
+    if (problem == OutOfRange)
     {
-      vtkIdType n;
-      const vtkIdType* ids;
-      it->GetCurrentCell(n, ids);
-      if (std::any_of(ids, ids + n, [&](vtkIdType id) { return id < 0 || id >= result->GetNumberOfPoints(); }))
-      {
-        std::cout << "line " << line << ": skipped (a point id out of range)\n";
-        continue;
-      }
-      double maxCurvature = 0.0;
-      double minTorsion = 0.0;
-      double maxTorsion = 0.0;
-      int collinearCount = 0;
-      int coplanarCount = 0;
-      for (vtkIdType k = 0; k < n; ++k)
-      {
-        maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-        minTorsion = std::min(minTorsion, torsion->GetComponent(ids[k], 0));
-        maxTorsion = std::max(maxTorsion, torsion->GetComponent(ids[k], 0));
-        collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
-        coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
-      }
-      std::cout << "line " << line << ": " << n << " points, max discrete curvature "
-                << maxCurvature << ", discrete torsion [" << minTorsion << ", " << maxTorsion
-                << "], " << collinearCount << " collinear points, " << coplanarCount
-                << " coplanar segments";
-      if (args.Positional.size() == 2)
-      {
-        std::cout << "; curve: " << CellValue(result, "ShapeViolations", line)
-                  << " shape violations (collinearity "
-                  << CellValue(result, "CollinearityViolations", line) << ", convexity "
-                  << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
-                  << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
-                  << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
-                  << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
-                  << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
-      }
-      std::cout << "\n";
+      summary << LineName(result, line) << ": skipped (" << problem << ")\n";
+      continue;
     }
+    double maxCurvature = 0.0;
+    int collinearCount = 0;
+    int coplanarCount = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
+      collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
+      coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
+    }
+    summary << LineName(result, line) << ": " << n << " points, max discrete curvature "
+            << maxCurvature << ", discrete torsion " << RangeText(torsion, ids, n, definedTorsion)
+            << ", " << collinearCount << " collinear points, " << coplanarCount
+            << " coplanar segments";
+    if (curve && CellValue(result, "ShapeViolations", line) >= 0)
+    {
+      summary << "; curve: " << CellValue(result, "ShapeViolations", line)
+              << " shape violations in the written samples (collinearity "
+              << CellValue(result, "CollinearityViolations", line) << ", convexity "
+              << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
+              << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
+              << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
+              << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
+              << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
+      // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
+      if (curve->GetCellData()->GetArray("ShapeViolations"))
+      {
+        summary << "; fit's audit: " << CellValue(curve, "ShapeViolations", line);
+      }
+    }
+    else if (curve)
+    {
+      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
+      // approximation's knots are not the data points (its NoiseLevel is the distance).
+      const bool approximation = CellValue(curve, "NoiseLevel", line) > 0.0;
+      const std::string why = !result->GetCellData()->GetArray("ShapeViolations")
+        ? "INPUT has cells other than lines: no counts per line"
+        : !problem.empty() ? problem
+        : approximation    ? "it approximates the data: its knots are not the data points"
+                           : "it does not match the data";
+      summary << "; curve: not audited (" << why << ")";
+      if (problem.empty())
+      {
+        (approximation ? approximations : unmatched).push_back(LineName(result, line));
+      }
+    }
+    summary << "\n";
+  }
+  if (!unmatched.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " does not match INPUT " +
+      InputName(input) + " (" + Join(unmatched) +
+      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
+      "with the data it was fitted to, and the same --closed (a curve that approximates the "
+      "data is audited by fit alone)");
+  }
+  if (!approximations.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " approximates INPUT " +
+      InputName(input) + " (" + Join(approximations) +
+      "): audit checks a curve through the data points; fit audited the approximation against "
+      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
   }
   if (!output.empty())
   {
     Write(result, output);
-    if (!quiet)
-    {
-      std::cout << "wrote " << output << "\n";
-    }
+    summary << "wrote " << (output == "-" ? "stdout" : output) << "\n";
   }
   return messages.Errors > 0 ? 2 : 0;
 }
@@ -912,12 +1478,25 @@ int Audit(Arguments& args)
 
 int main(int argc, char* argv[])
 {
-  // Messages go through the observers above, not VTK's default window.
+  // Messages go through the observers above, not VTK's default window; those no
+  // observer takes (a reader's XML parser's) are printed alike, not as VTK's log.
   vtkOutputWindow::GetInstance()->SetDisplayModeToNever();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkLogger::AddCallback("shapesplines",
+    [](void*, const vtkLogger::Message& message) {
+      std::cerr << (message.verbosity <= vtkLogger::VERBOSITY_ERROR ? "error: " : "warning: ")
+                << MessageText(message.message) << '\n';
+    },
+    nullptr, vtkLogger::VERBOSITY_WARNING);
   const std::string command = argc > 1 ? argv[1] : "";
   if (command == "-h" || command == "--help" || command == "help")
   {
     std::cout << Usage;
+    return 0;
+  }
+  if (command == "--version")
+  {
+    std::cout << Version;
     return 0;
   }
   try
@@ -926,6 +1505,11 @@ int main(int argc, char* argv[])
     if (args.Flag("help"))
     {
       std::cout << Usage;
+      return 0;
+    }
+    if (args.Flag("version"))
+    {
+      std::cout << Version;
       return 0;
     }
     if (command == "fit")
