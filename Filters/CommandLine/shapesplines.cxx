@@ -2,6 +2,8 @@
 //   shapesplines fit INPUT -o OUTPUT [options]   fit spline curves to polylines
 //   shapesplines audit INPUT [CURVE] [options]   discrete shape, and a curve's audit
 // Reads .vtp, legacy .vtk and .csv; writes .vtp or .csv. Run with --help.
+#include "LineCells.h"
+
 #include "vtkCubicSplineFilter.h"
 #include "vtkGeneralizedCubicSplineFilter.h"
 #include "vtkQQRSplineFilter.h"
@@ -335,10 +337,6 @@ struct FileErrors
   std::string First;
 };
 
-/// Column names that hold line ids, compared without case (--line-column names another).
-const std::vector<std::string> LineIdNames = { "line_id", "line", "lineid", "id", "cell",
-  "cell_id", "track", "streamline" };
-
 std::string Trim(const std::string& text)
 {
   const size_t first = text.find_first_not_of(" \t\r");
@@ -478,7 +476,7 @@ CsvColumns HeaderColumns(
       axes[name[0] - 'x'] = static_cast<int>(f);
     }
     else if (lineColumn.empty()
-        ? std::count(LineIdNames.begin(), LineIdNames.end(), name) > 0
+        ? shapesplines::isLineIdName(name)
         : name == Lower(lineColumn))
     {
       lineIdColumns.push_back(f);
@@ -496,7 +494,7 @@ CsvColumns HeaderColumns(
   }
   // line_id, the name fit writes, before the others: a curve's CSV always reads back.
   const auto canonical = std::find_if(lineIdColumns.begin(), lineIdColumns.end(),
-    [&](size_t f) { return Lower(names[f]) == LineIdNames[0]; });
+    [&](size_t f) { return Lower(names[f]) == "line_id"; });
   if (canonical != lineIdColumns.end())
   {
     lineIdColumns = { *canonical };
