@@ -6,7 +6,11 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -95,7 +99,10 @@ vtkPolylineShapeAnalysis::~vtkPolylineShapeAnalysis() = default;
 
 int vtkPolylineShapeAnalysis::FillInputPortInformation(int port, vtkInformation* info)
 {
+  // Composite data are taken whole (not block by block by the pipeline) so
+  // that each data block meets the curve's block at the same place.
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObjectTree");
   if (port == 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
@@ -103,15 +110,48 @@ int vtkPolylineShapeAnalysis::FillInputPortInformation(int port, vtkInformation*
   return 1;
 }
 
+int vtkPolylineShapeAnalysis::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+vtkTypeBool vtkPolylineShapeAnalysis::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+int vtkPolylineShapeAnalysis::RequestDataObject(
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  if (!input)
+  {
+    return 0;
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = vtkDataObject::GetData(outInfo);
+  if (!output || !output->IsA(input->GetClassName()))
+  {
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), vtk::TakeSmartPointer(input->NewInstance()));
+  }
+  return 1;
+}
+
 int vtkPolylineShapeAnalysis::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* curve = vtkPolyData::GetData(inputVector[1], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
+  vtkDataObject* curveObject = vtkDataObject::GetData(inputVector[1], 0);
+  vtkDataObject* outputObject = vtkDataObject::GetData(outputVector, 0);
+  if (!inputObject || !outputObject)
   {
-    vtkErrorMacro("Missing input or output poly data.");
+    vtkErrorMacro("Missing input or output.");
     return 0;
   }
   if (std::isnan(this->DataShapeTolerance) || std::isnan(this->CurveShapeTolerance))
@@ -119,6 +159,80 @@ int vtkPolylineShapeAnalysis::RequestData(
     vtkErrorMacro("DataShapeTolerance and CurveShapeTolerance must not be NaN: nothing analysed.");
     return 1;
   }
+  auto* curveTree = vtkDataObjectTree::SafeDownCast(curveObject);
+  auto* curvePolyData = vtkPolyData::SafeDownCast(curveObject);
+  if (auto* input = vtkPolyData::SafeDownCast(inputObject))
+  {
+    vtkPolyData* curve = curvePolyData;
+    if (curveTree)
+    {
+      // One data set against a composite curve: its only poly data block.
+      auto blocks = vtkCompositeDataSet::GetDataSets<vtkPolyData>(curveTree);
+      if (blocks.size() == 1)
+      {
+        curve = blocks[0];
+      }
+      else
+      {
+        vtkErrorMacro("The curve input has " << blocks.size() << " poly data blocks for one data "
+                                             << "set: nothing audited.");
+        curve = nullptr;
+      }
+    }
+    this->Analyse(input, curve, vtkPolyData::SafeDownCast(outputObject));
+    return 1;
+  }
+
+  auto* inputTree = vtkDataObjectTree::SafeDownCast(inputObject);
+  auto* outputTree = vtkDataObjectTree::SafeDownCast(outputObject);
+  if (!inputTree || !outputTree)
+  {
+    vtkErrorMacro("Input 0 must be poly data or a composite of poly data.");
+    return 0;
+  }
+  outputTree->CopyStructure(inputTree);
+  const size_t dataBlocks = vtkCompositeDataSet::GetDataSets<vtkPolyData>(inputTree).size();
+  auto it = vtk::TakeSmartPointer(inputTree->NewTreeIterator());
+  it->SkipEmptyNodesOn();
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    vtkDataObject* blockObject = it->GetCurrentDataObject();
+    auto* block = vtkPolyData::SafeDownCast(blockObject);
+    if (!block)
+    {
+      vtkWarningMacro("Block " << it->GetCurrentFlatIndex() << " is a "
+                               << blockObject->GetClassName() << ", not poly data: left out.");
+      continue;
+    }
+    vtkPolyData* curve = nullptr;
+    if (curveTree)
+    {
+      curve = vtkPolyData::SafeDownCast(curveTree->GetDataSet(it));
+      if (!curve)
+      {
+        vtkErrorMacro("The curve input has no poly data where the data have block "
+          << it->GetCurrentFlatIndex() << ": that block is not audited.");
+      }
+    }
+    else if (curvePolyData && dataBlocks == 1)
+    {
+      curve = curvePolyData;
+    }
+    else if (curvePolyData)
+    {
+      vtkErrorMacro("One curve for " << dataBlocks << " data blocks: block "
+                                     << it->GetCurrentFlatIndex() << " is not audited (give a "
+                                     << "curve of the same blocks, e.g. the spline filter's output).");
+    }
+    vtkNew<vtkPolyData> analysed;
+    this->Analyse(block, curve, analysed);
+    outputTree->SetDataSet(it, analysed);
+  }
+  return 1;
+}
+
+void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, vtkPolyData* output)
+{
   output->ShallowCopy(input);
   const vtkIdType nPoints = input->GetNumberOfPoints();
   auto curvature = NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, nPoints);
@@ -272,7 +386,6 @@ int vtkPolylineShapeAnalysis::RequestData(
       vtkWarningMacro("Input has non-line cells: per-line audit counts are not written.");
     }
   }
-  return 1;
 }
 
 void vtkPolylineShapeAnalysis::PrintSelf(ostream& os, vtkIndent indent)

@@ -24,6 +24,12 @@
  * or closure do not match the data). The audit sees the curve only at its
  * samples: sample densely enough.
  *
+ * Composite inputs (multiblock, partitioned, partitioned collection) on
+ * either port: the output has input 0's structure, each poly data block is
+ * analysed against the curve's block at the same place (a single poly data
+ * curve serves a single block); blocks that are not poly data are left out
+ * with a warning naming them.
+ *
  * @sa vtkShapeSplineFilter vtkCubicSplineFilter
  */
 #ifndef vtkPolylineShapeAnalysis_h
@@ -74,6 +80,11 @@ protected:
   ~vtkPolylineShapeAnalysis() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  /// The output is of input 0's type (poly data, or its composite structure).
+  int RequestDataObject(vtkInformationVector** inputVector, vtkInformationVector* outputVector);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool Closed = false;
@@ -81,6 +92,9 @@ protected:
   double CurveShapeTolerance = 1e-3;
 
 private:
+  /// One poly data block against its curve (null: no audit).
+  void Analyse(vtkPolyData* input, vtkPolyData* curve, vtkPolyData* output);
+
   vtkPolylineShapeAnalysis(const vtkPolylineShapeAnalysis&) = delete;
   void operator=(const vtkPolylineShapeAnalysis&) = delete;
 };

@@ -23,6 +23,11 @@
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkNew.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataObjectTree.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -1761,4 +1766,80 @@ TEST(TorsionColorRange, CentredOnZeroAndNotSquashedBySpikes)
   EXPECT_GT(largest, 100.0);
   EXPECT_LT(range(aorta.Output).second, 0.2 * largest);
   EXPECT_GT(range(aorta.Output).second, 0.0);
+}
+
+// ---------------------------------------------------------------------------
+// Composite data on both ports of the analysis.
+
+TEST(CompositeAnalysis, EachBlockMeetsTheCurveBlockAtTheSamePlace)
+{
+  const auto akima = PolylinesData({ AkimaPoints() });
+  const auto helix = ReadData("helix.vtp");
+  // The same blocks as a multiblock and as a partitioned data set.
+  vtkNew<vtkMultiBlockDataSet> multiblock;
+  multiblock->SetBlock(0, akima);
+  multiblock->SetBlock(1, helix);
+  vtkNew<vtkPartitionedDataSet> partitioned;
+  partitioned->SetPartition(0, akima);
+  partitioned->SetPartition(1, helix);
+  for (vtkDataObjectTree* data : std::initializer_list<vtkDataObjectTree*>{ multiblock, partitioned })
+  {
+    SCOPED_TRACE(data->GetClassName());
+    vtkNew<vtkCubicSplineFilter> cubic;
+    cubic->SetInputData(data);
+    vtkNew<vtkPolylineShapeAnalysis> analysis;
+    analysis->SetInputData(data);
+    analysis->SetCurveConnection(cubic->GetOutputPort());
+    MessageLog log({ cubic, analysis });
+    analysis->Update();
+    EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
+    auto* output = vtkDataObjectTree::SafeDownCast(analysis->GetOutputDataObject(0));
+    ASSERT_NE(output, nullptr);
+    EXPECT_STREQ(output->GetClassName(), data->GetClassName());
+    const auto blocks = vtkCompositeDataSet::GetDataSets<vtkPolyData>(output);
+    ASSERT_EQ(blocks.size(), 2u);
+    // Each block as its own poly data run gives the same audit.
+    const FilterRun akimaAlone = RunAnalysis(akima, true);
+    const FilterRun helixAlone = RunAnalysis(helix, true);
+    EXPECT_EQ(CellArray(blocks[0], "ShapeViolations")->GetTuple1(0),
+      CellArray(akimaAlone.Output, "ShapeViolations")->GetTuple1(0));
+    EXPECT_GT(CellArray(blocks[0], "ShapeViolations")->GetTuple1(0), 0); // the cubic breaks Akima's shape
+    EXPECT_EQ(CellArray(blocks[1], "ShapeViolations")->GetTuple1(0),
+      CellArray(helixAlone.Output, "ShapeViolations")->GetTuple1(0));
+  }
+}
+
+TEST(CompositeAnalysis, OneBlockCurveForPolyDataAndOtherBlocksNamed)
+{
+  const auto akima = PolylinesData({ AkimaPoints() });
+  // Poly data against a composite curve of one block: audited.
+  vtkNew<vtkMultiBlockDataSet> oneBlock;
+  oneBlock->SetBlock(0, akima);
+  vtkNew<vtkCubicSplineFilter> cubic;
+  cubic->SetInputData(oneBlock);
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  analysis->SetInputData(akima);
+  analysis->SetCurveConnection(cubic->GetOutputPort());
+  {
+    MessageLog log({ cubic, analysis });
+    analysis->Update();
+    EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
+  }
+  ASSERT_NE(analysis->GetOutput(), nullptr);
+  EXPECT_GT(CellArray(analysis->GetOutput(), "ShapeViolations")->GetTuple1(0), 0);
+
+  // A block that is not poly data is left out with a warning naming it.
+  vtkNew<vtkMultiBlockDataSet> mixed;
+  mixed->SetBlock(0, akima);
+  mixed->SetBlock(1, vtkNew<vtkUnstructuredGrid>());
+  vtkNew<vtkPolylineShapeAnalysis> dataOnly;
+  dataOnly->SetInputData(mixed);
+  MessageLog log({ dataOnly });
+  dataOnly->Update();
+  EXPECT_EQ(CountMessages(log.Warnings, { "Block 2", "vtkUnstructuredGrid", "not poly data" }), 1)
+    << Joined(log.Warnings);
+  const auto blocks =
+    vtkCompositeDataSet::GetDataSets<vtkPolyData>(dataOnly->GetOutputDataObject(0));
+  ASSERT_EQ(blocks.size(), 1u);
+  EXPECT_NE(blocks[0]->GetPointData()->GetArray("DiscreteCurvature"), nullptr);
 }
