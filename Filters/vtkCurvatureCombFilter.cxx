@@ -66,6 +66,14 @@ int vtkCurvatureCombFilter::RequestData(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
+  if (!input && inputObject && output)
+  {
+    // A composite input's other blocks still go through.
+    vtkWarningMacro("A " << inputObject->GetClassName() << " (a block of a composite input?) is "
+                         << "not poly data: left out. Extract Surface makes poly data of it.");
+    return 1;
+  }
   if (!input || !output)
   {
     vtkErrorMacro("Missing input or output poly data.");

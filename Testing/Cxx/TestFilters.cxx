@@ -1843,3 +1843,26 @@ TEST(CompositeAnalysis, OneBlockCurveForPolyDataAndOtherBlocksNamed)
   ASSERT_EQ(blocks.size(), 1u);
   EXPECT_NE(blocks[0]->GetPointData()->GetArray("DiscreteCurvature"), nullptr);
 }
+
+TEST(CompositeInput, ABlockThatIsNotPolyDataIsNamedAndTheOthersGoThrough)
+{
+  vtkNew<vtkMultiBlockDataSet> mixed;
+  mixed->SetBlock(0, PolylinesData({ AkimaPoints() }));
+  mixed->SetBlock(1, vtkNew<vtkUnstructuredGrid>());
+  vtkNew<vtkCubicSplineFilter> cubic;
+  cubic->SetInputData(mixed);
+  vtkNew<vtkCurvatureCombFilter> comb;
+  comb->SetInputConnection(cubic->GetOutputPort());
+  MessageLog log({ cubic, comb });
+  comb->Update();
+  EXPECT_TRUE(log.Errors.empty()) << Joined(log.Errors);
+  EXPECT_EQ(CountMessages(log.Warnings, { "vtkUnstructuredGrid", "not poly data", "left out" }), 1)
+    << Joined(log.Warnings);
+  const auto curves = vtkCompositeDataSet::GetDataSets<vtkPolyData>(cubic->GetOutputDataObject(0));
+  ASSERT_EQ(curves.size(), 2u);
+  EXPECT_EQ(curves[0]->GetNumberOfLines(), 1);
+  EXPECT_EQ(curves[1]->GetNumberOfPoints(), 0);
+  const auto combs = vtkCompositeDataSet::GetDataSets<vtkPolyData>(comb->GetOutputDataObject(0));
+  ASSERT_EQ(combs.size(), 2u);
+  EXPECT_GT(combs[0]->GetNumberOfLines(), 1);
+}
