@@ -34,6 +34,7 @@
 #include "Parameterization.h"
 #include "ShapeAnalysis.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdarg>
@@ -42,6 +43,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -354,6 +356,65 @@ void extraChecksOn(const std::vector<ss::Vec3>& points, const ss::FittedPolyline
 }
 } // namespace
 
+/**
+ * The curve stays with its data: the audit's PolygonDeviation is finite, a
+ * span beyond MaximumPolygonDeviation is counted and makes the line not
+ * shape-preserving; and where the output samples are the audit's (same
+ * subdivisions of every span, an interpolation), the deviation measured
+ * again on them, in data units, is the audit's.
+ */
+void checkDeviation(
+  const ss::FittedPolyline& fit, const ss::CurveSamples& samples, const ss::FitOptions& options)
+{
+  const ss::ShapeAudit& audit = fit.Audit;
+  CHECK(std::isfinite(audit.PolygonDeviation) && audit.PolygonDeviation >= 0.0,
+    "PolygonDeviation %g", audit.PolygonDeviation);
+  CHECK((audit.PolygonDeviation > ss::MaximumPolygonDeviation) == (audit.StrayingSpans > 0),
+    "PolygonDeviation %g with %d straying spans", audit.PolygonDeviation, audit.StrayingSpans);
+  CHECK(audit.StrayingSpans == 0 || (!audit.preserving() && audit.violations() > 0),
+    "%d straying spans on a line called shape-preserving", audit.StrayingSpans);
+  if (!fit.interpolates() ||
+    options.Sampling.SampleMode != ss::SamplingOptions::Mode::Subdivisions ||
+    options.Sampling.Subdivisions != options.AuditSubdivisions ||
+    std::any_of(fit.Plan.PerSpan.begin(), fit.Plan.PerSpan.end(),
+      [&](long perSpan) { return perSpan != options.AuditSubdivisions; }))
+  {
+    return; // samples elsewhere than the audit's (or capped by the budget)
+  }
+  const auto& points = fit.KnotPoints;
+  const int spans = fit.Data.numberOfSpans();
+  const auto segment = [&](int j) { return points[(j + 1) % points.size()] - points[j]; };
+  double largest = 0.0;
+  double shortestLocal = std::numeric_limits<double>::infinity();
+  double farthest = 0.0; // coordinate size: the output's rounding scales with it
+  for (int k = 0; k < samples.size(); ++k)
+  {
+    const int j = samples.Span[k];
+    double local = 0.0;
+    for (const int i : { j - 1, j, j + 1 })
+    {
+      if (fit.Data.Closed || (i >= 0 && i < spans))
+      {
+        local = std::max(local, segment(((i % spans) + spans) % spans).norm());
+      }
+    }
+    const ss::Vec3 ab = segment(j);
+    const ss::Vec3& x = samples.Values[k][0];
+    const double along =
+      ab.squaredNorm() > 0.0 ? std::clamp((x - points[j]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double distance = (x - (points[j] + along * ab)).norm();
+    largest = std::max(largest, local > 0.0 ? distance / local : distance);
+    shortestLocal = std::min(shortestLocal, local > 0.0 ? local : 1.0);
+    farthest = std::max(farthest, x.cwiseAbs().maxCoeff());
+  }
+  // The audit measures in the normalised frame; the samples are rounded in
+  // data units, far from the origin by up to their coordinates' rounding.
+  const double rounding = 64 * DBL_EPSILON * farthest / shortestLocal;
+  CHECK(std::abs(largest - audit.PolygonDeviation) <= 1e-6 * std::max(1.0, largest) + rounding,
+    "deviation on the output samples %.17g, the audit's %.17g (rounding %.3g)", largest,
+    audit.PolygonDeviation, rounding);
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   const Input input = decode(data, size);
@@ -517,6 +578,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     CHECK(index == count, "closed curve: %ld samples planned, %d made", index, count);
   }
+
+  checkDeviation(fit, samples, options);
 
   // The audit of the output samples, one sample at a time.
   std::vector<ss::AuditSample> auditSamples(count);
