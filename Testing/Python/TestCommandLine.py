@@ -142,6 +142,11 @@ code, out, err = run("fit", os.path.join(args.data, "aorta-centerline.vtp"), "-o
                      "--parameterization", "centripetal", "--vmtk-names")
 check(code == 0 and os.path.getsize(temp("aorta.vtp")) > 0 and out.count("\nline ") + out.startswith("line ") == 2,
       "fit aorta.vtp -> .vtp with family options, arc-length sampling and VMTK names", out.strip()[-60:])
+with open(temp("aorta.vtp"), "rb") as written:
+    head = written.read()
+check(b'compressor="vtkLZ4DataCompressor"' in head and b'<AppendedData encoding="raw">' in head,
+      "a .vtp is written as raw appended data compressed by LZ4 (the fast writer setting)",
+      head[:200].decode("latin-1"))
 
 code, out, err = run("fit", os.path.join(args.data, "akima.vtp"), "-o", temp("akima-gencubic.csv"),
                      "--family", "gencubic", "--kind", "exponential", "--max-tension", "500")
