@@ -524,6 +524,34 @@ def threads_identical(poly):
     return same
 
 
+def threads_by_default(lines):
+    """Every family at its defaults on noisy short lines, as a plain pvpython
+    session runs it (the process on VTK's Sequential backend, no
+    VTK_SMP_BACKEND_IN_USE): Number Of Threads 1 against the default (all cores)."""
+    xyz = helix_lines(lines, 50, points_per_turn=16.0, noise=1e-3)
+    poly = to_polydata(xyz)
+    print("Threads by default, %d lines x 50 points (noise 0.1%%, default modes), best of 2:" % lines)
+    print("%-9s %10s %10s %8s %s" % ("family", "1 thread", "default", "ratio", "identical"))
+    vtkSMPTools.SetBackend("Sequential")
+    for family, proxy, _ in FAMILIES:
+        results = {}
+        for threads in (1, 0):
+            algorithm = getattr(simple, proxy)(Input=simple.Line(), NumberOfThreads=threads).GetClientSideObject()
+            algorithm.SetInputDataObject(0, poly)
+            best = float("inf")
+            for _ in range(2):
+                algorithm.Modified()
+                start = time.perf_counter()
+                algorithm.Update()
+                best = min(best, time.perf_counter() - start)
+            out = algorithm.GetOutputDataObject(0)
+            results[threads] = (best, vtk_to_numpy(out.GetPoints().GetData()).copy(),
+                                vtk_to_numpy(out.GetPointData().GetArray("Torsion")).copy())
+        same = all(np.array_equal(a, b) for a, b in zip(results[1][1:], results[0][1:]))
+        print("%-9s %9.2fs %9.2fs %7.2fx %s" % (family, results[1][0], results[0][0],
+                                                results[1][0] / results[0][0], "yes" if same else "NO"))
+
+
 def plot_growth(sizes, per_point, folder):
     import matplotlib
     matplotlib.use("Agg")
@@ -619,6 +647,7 @@ def main():
     shape_on_users_data()
     noisy_unevenly_spaced()
     threads_identical(to_polydata(helix_lines(2000, 50)))
+    threads_by_default(args.lines)
     sizes, per_point = growth(args.plugin)
     plot_growth(sizes, per_point, args.output)
     plot_accuracy(accuracy(), args.output)
