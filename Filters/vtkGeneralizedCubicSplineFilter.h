@@ -6,7 +6,7 @@
  *          shape of the data
  *
  * Each span of the curve lies in span{1, t, u(t), v(t)} (Costantini & Manni,
- * paper 002) with a kind (SpaceKind) and a tension of its own: Polynomial is
+ * Costantini & Manni (generalized cubics)) with a kind (SpaceKind) and a tension of its own: Polynomial is
  * the classical cubic; Exponential (hyperbolic, tension p >= 0),
  * Trigonometric (0 <= p < pi) and VariableDegree ((1 - t)^k, k >= 3) tend to
  * the cubic at zero tension (degree 3) and to the straight segment as the
@@ -14,7 +14,7 @@
  * has natural ends (closed lines are periodic), and is solved in O(n).
  *
  * With AutomaticTension on (default) the tension starts at Tension and is
- * raised, span by span, only where the shape audit (paper 001, Definition 1)
+ * raised, span by span, only where the shape audit (Costantini & Manni (VDPS), Definition 1)
  * fails, until no criterion fails or MaxTension is reached (within the
  * bounds of every automatic mode, see vtkShapeSplineFilter): collinear data
  * stay straight, convex data convex, planar data planar, without flattening

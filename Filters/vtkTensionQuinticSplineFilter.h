@@ -4,7 +4,7 @@
  *          polyline, with shape parameters chosen automatically where the
  *          shape of the data asks for them
  *
- * The spline of Cravero, Manni and Sampoli (paper 000): quintic B-spline-like
+ * The spline of Cravero, Manni and Sampoli (Cravero, Manni & Sampoli): quintic B-spline-like
  * functions with six-interval support built by a geometric construction of
  * their Bezier points. Continuity C4 (default) has one tension parameter gamma
  * in (0,1] per knot; C3 has gamma in (0,2) and lambda > 0 per knot. With all
@@ -15,7 +15,7 @@
  *
  * In Automatic mode (default) every knot starts at gamma = lambda = 1 and
  * the parameters of the two knots of every span that breaks the shape of the
- * data (paper 001, Definition 1: collinearity, convexity, coplanarity,
+ * data (Costantini & Manni (VDPS), Definition 1: collinearity, convexity, coplanarity,
  * torsion sign) are halved until no span breaks it or they reach 1/256,
  * within the bounds every automatic mode keeps (no cusp, no runaway
  * curvature; see vtkShapeSplineFilter); what is left is reported.
@@ -28,7 +28,7 @@
  * ones are interpolated with a warning) fits the spline with NumberOfKnots
  * knots (0, the default: chosen per line by cross-validation), uniform in
  * the parameters, which CorrectParameters moves to where each point sits on
- * the curve, in least squares (paper 000, section 5); its shape reference is
+ * the curve, in least squares (Cravero, Manni & Sampoli, section 5); its shape reference is
  * L*, the least-squares polygon on the same knots, whose shape the automatic
  * mode keeps where it stands out of the noise, changing the curvature by at
  * most 2x. ShapeViolations then counts every Definition 1 criterion against

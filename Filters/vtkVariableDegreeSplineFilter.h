@@ -4,7 +4,7 @@
  *          degrees raised automatically only where the curve breaks the
  *          shape of the data
  *
- * Costantini & Manni's quintic-like variable degree splines (paper 001): on
+ * Costantini & Manni's quintic-like variable degree polynomial splines (VDPS): on
  * each span the curve lies in span{1 - v, v, (1 - v)^k_i, v (1 - v)^(k_i - 1),
  * v^(k_i+1 - 1) (1 - v), v^k_i+1} with a degree k_i >= 5 per knot, built by
  * corner cutting from one de Boor point per knot with a tension lambda_i per
@@ -14,7 +14,7 @@
  *
  * Mode INTERPOLATE (default) passes through every point. With
  * AutomaticDegrees on (default) the degrees start at Degree and are doubled
- * only at the knots of spans where the shape audit (paper 001, Definition 1)
+ * only at the knots of spans where the shape audit (Costantini & Manni (VDPS), Definition 1)
  * fails, until none fails or MaxDegree is reached, within the bounds of
  * every automatic mode (see vtkShapeSplineFilter). The APPROXIMATE modes
  * (lines with at least four points, six when closed; shorter ones are

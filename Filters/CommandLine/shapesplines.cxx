@@ -61,7 +61,7 @@ Usage:
   shapesplines --help | --version
 
 fit: one spline curve per polyline of INPUT, sampled with its exact Frenet frame,
-curvature and signed torsion, audited against the shape of the data (paper 001,
+curvature and signed torsion, audited against the shape of the data (Costantini & Manni (VDPS),
 Definition 1). Prints a summary per line.
 audit: the discrete shape of INPUT's polylines (curvature, torsion, collinear and
 coplanar runs) and, given a CURVE fitted to them by `fit`, where it breaks that
@@ -93,7 +93,7 @@ decimal point, not a comma.
 CSV output: a row per sample, line_id (the input's, else the line's place)
 then x,y,z then every point array: a CSV written by fit reads back whole.
 
-Shape violations (paper 001, Definition 1): fit counts them in its own audit of
+Shape violations (Costantini & Manni (VDPS), Definition 1): fit counts them in its own audit of
 each curve, the curve's cell array ShapeViolations: 16 samples a span whatever
 the output's sampling, each knot seen from both of its spans, samples whose
 curvature is within rounding of zero left out, spans straying from the data

@@ -57,8 +57,8 @@ struct BuiltCurve
 {
   std::unique_ptr<Curve> Spline;
   /// Approximations only: the polygon (normalised frame, one vertex per knot
-  /// of Spline) whose discrete shape the curve keeps, e.g. L* of paper 000 or
-  /// psi of paper 001. Empty for an interpolation: its reference is the data.
+  /// of Spline) whose discrete shape the curve keeps, e.g. L* of Cravero, Manni & Sampoli or
+  /// psi of Costantini & Manni (VDPS). Empty for an interpolation: its reference is the data.
   std::optional<CleanPolyline> ShapeReference;
   /// The audit of Spline against its reference, when the builder has made it.
   std::optional<ShapeAudit> Audit;

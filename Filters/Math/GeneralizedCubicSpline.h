@@ -1,4 +1,4 @@
-// ShapeSplines math core: C2 generalized cubic splines (paper 002), piecewise
+// ShapeSplines math core: C2 generalized cubic splines (Costantini & Manni (generalized cubics)), piecewise
 // in span{1, t, u(t), v(t)} with a kind and a tension per interval.
 #ifndef shapesplines_GeneralizedCubicSpline_h
 #define shapesplines_GeneralizedCubicSpline_h
@@ -87,8 +87,9 @@ std::vector<std::array<double, 4>> bezierFromDeBoor(const std::vector<double>& k
  * A C2 curve that is, on each span, a combination of 1, t, u_k(t), v_k(t)
  * with the span's own kind and tension (t = (x - x_k) / h_k). Interpolation
  * solves for the second derivatives at the knots, a tridiagonal (cyclic for
- * closed curves) diagonally dominant system: the spline of paper 002's
- * generalized cubic B-splines that interpolates the data, with natural ends.
+ * closed curves) diagonally dominant system: the spline of Costantini &
+ * Manni's generalized cubic B-splines (generalized cubics) that interpolates
+ * the data, with natural ends.
  */
 class GeneralizedCubicSpline final : public Curve
 {

@@ -20,7 +20,7 @@ void checkExponent(double a, const char* what)
   if (!(a >= 2.0) || !std::isfinite(a))
   {
     throw std::invalid_argument(std::string("qqr: shape parameter ") + what +
-      " must be a finite number >= 2 (paper 003, Definition 1), got " + std::to_string(a));
+      " must be a finite number >= 2 (Wang & Zhang, Definition 1), got " + std::to_string(a));
   }
 }
 

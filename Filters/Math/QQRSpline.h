@@ -1,6 +1,6 @@
 // ShapeSplines math core: the quartic Bernstein-like (qqr) basis with two
 // exponential shape parameters and the cubic B-spline-like curves built on it
-// (paper 003, Wang & Zhang, AIMS Mathematics 5(5), 2020).
+// (Wang & Zhang, AIMS Mathematics 5(5), 2020).
 #ifndef shapesplines_QQRSpline_h
 #define shapesplines_QQRSpline_h
 
@@ -47,7 +47,8 @@ Jet qqrTail(double t, double a, int order = 4);
 /**
  * Local shape parameters x_i, y_i, z_i of the paper's choice just before its
  * Figure 5, per knot interval i of h (h_i = u_{i+1} - u_i), read with exactly
- * these indices (DESIGN.md section 5):
+ * these indices (shifted by one, the basis at alpha = beta = 4 is no longer
+ * the cubic B-spline on non-uniform knots; as read here it is, to 3e-16):
  *   x_i = h_i / (4 (h_i + h_{i+1} + h_{i+2})),
  *   y_i = h_{i+1} / (4 (h_{i-1} + h_i + h_{i+1})),
  *   z_i = (2 h_i + h_{i+1}) / (2 (h_i + h_{i+1} + h_{i+2})).

@@ -1,5 +1,5 @@
 // ShapeSplines math core: the discrete shape of a polyline and the shape audit
-// of a curve against it (paper 001, section 4, Definition 1).
+// of a curve against it (Costantini & Manni (VDPS), section 4, Definition 1).
 #ifndef shapesplines_ShapeAnalysis_h
 #define shapesplines_ShapeAnalysis_h
 

@@ -418,7 +418,7 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
     // The abscissae stayed non-increasing after every recovery (fuzz: spans from
     // 1e25 to 1e37 in one line): this line cannot be a tensioned quintic.
     throw std::domain_error("tension quintic spline: its abscissae X(t) are not increasing on "
-                            "these knots (paper 000, footnote 3; extremely uneven spacing); use "
+                            "these knots (Cravero, Manni & Sampoli, footnote 3; extremely uneven spacing); use "
                             "the generalized cubic, another parameterization, or resample the line");
   }
   std::vector<std::array<double, 6>> xBezier(n);

@@ -1,5 +1,5 @@
 // ShapeSplines math core: C3 and C4 tensioned quintic parametric B-splines
-// (Cravero, Manni, Sampoli, paper 000).
+// (Cravero, Manni, Sampoli, Cravero, Manni & Sampoli).
 #ifndef shapesplines_TensionQuinticSpline_h
 #define shapesplines_TensionQuinticSpline_h
 

@@ -96,10 +96,14 @@ private:
 };
 
 /**
- * The corner cutting of paper 001 (section 3 and appendix, with r_i as in
- * the text: see DESIGN.md) giving the pseudo Bezier points b_i0..b_i5 of span
+ * The corner cutting of Costantini & Manni (VDPS) (section 3 and appendix)
+ * giving the pseudo Bezier points b_i0..b_i5 of span
  * i from the de Boor points deBoor(j), j = i-2..i+3. T is a point, or a
  * vector of weights when the construction is applied to unit vectors.
+ * r_i is the text's (h_{i+1} F_i^- + (h_{i-2} + h_{i-1} + h_i) F_i^+) /
+ * (h_{i-2} + h_{i-1} + h_i + h_{i+1}), as in Cravero, Manni & Sampoli (13):
+ * the appendix's version is a typo that still joins C3 but is not the C4
+ * quintic at degree 5, lambda 1 (fourth-derivative jumps O(1), not 1e-13).
  */
 template <class T, class DeBoor>
 std::array<T, 6> spanNet(const Extension& e, int i, const DeBoor& deBoor)

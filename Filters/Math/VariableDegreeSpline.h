@@ -1,4 +1,4 @@
-// ShapeSplines math core: C3 variable degree splines (paper 001), quintic-like
+// ShapeSplines math core: C3 variable degree splines (Costantini & Manni (VDPS)), quintic-like
 // curves whose degrees k_i >= 5 and tensions lambda_i per knot pull them
 // towards their control polygon, built by corner cutting from one de Boor
 // point per knot.
@@ -53,7 +53,7 @@ struct VariableDegreeParameters
 };
 
 /**
- * A C3 spline curve of VS_k with one de Boor point D_i per knot (paper 001,
+ * A C3 spline curve of VS_k with one de Boor point D_i per knot (Costantini & Manni (VDPS),
  * section 3): the first corner cutting step of the C4 quintic with a tension
  * lambda_i per knot, then the C3 variable degree step. On span i it is
  * sum_j b_ij B_j((u - u_i) / h_i) with the degrees k_i, k_i+1 of its knots.

@@ -1,4 +1,4 @@
-// C2 generalized cubic splines (paper 002): kernels, the generalized
+// C2 generalized cubic splines (Costantini & Manni (generalized cubics)): kernels, the generalized
 // Bernstein basis, the generalized B-splines of section 3, interpolation,
 // automatic tension and accuracy.
 #include "GeneralizedCubicSpline.h"

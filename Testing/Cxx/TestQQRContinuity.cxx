@@ -1,4 +1,4 @@
-// Theorem 13 of paper 003: with x = y = 0 and alpha = beta >= l + 3 the qqr
+// Theorem 13 of Wang & Zhang: with x = y = 0 and alpha = beta >= l + 3 the qqr
 // B-spline curves are C2 and Frenet frame continuous (FC(2l+3)) at every
 // knot, although the third derivative jumps; with the paper's cubic B-spline
 // parameters (x, y != 0) the torsion jumps instead.

@@ -1,4 +1,4 @@
-// Quartic Bernstein-like (qqr) basis and cubic B-spline-like curves (paper 003):
+// Quartic Bernstein-like (qqr) basis and cubic B-spline-like curves (Wang & Zhang):
 // Theorem 1, the B-spline basis (Theorems 5, 6, 8, 10), the reduction to the
 // classical cubic B-splines, the Bezier form, the local interpolation of
 // section 3.6, the automatic mode on the shape data sets and the helix.

@@ -1,4 +1,4 @@
-// Discrete shape of polylines and the Definition 1 audit (paper 001).
+// Discrete shape of polylines and the Definition 1 audit (Costantini & Manni (VDPS)).
 #include "MathTestUtilities.h"
 
 #include "ShapeAnalysis.h"

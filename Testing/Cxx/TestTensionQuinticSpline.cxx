@@ -1,4 +1,4 @@
-// Tensioned quintic parametric B-splines (paper 000): basis properties,
+// Tensioned quintic parametric B-splines (Cravero, Manni & Sampoli): basis properties,
 // continuity, tension limit, the knot system (34) and interpolation.
 #include "Approximation.h"
 #include "TensionQuinticFit.h"
@@ -485,7 +485,7 @@ namespace
 {
 /**
  * Noisy space data like the perturbed bean of Costantini and Pelosi used in
- * paper 000, section 5: a bean-shaped loop lifted by 0.4 sin 2s, so that the
+ * Cravero, Manni & Sampoli, section 5: a bean-shaped loop lifted by 0.4 sin 2s, so that the
  * discrete torsion of its least-squares polygons changes sign, with Gaussian
  * noise of standard deviation `noise` (fixed seed: the data are reproducible).
  */

@@ -1,4 +1,4 @@
-// C3 variable degree splines (paper 001): the pseudo Bernstein basis, the
+// C3 variable degree splines (Costantini & Manni (VDPS)): the pseudo Bernstein basis, the
 // corner cutting construction, interpolation, the tension limit, automatic
 // shape preservation, accuracy and the approximation schemes.
 #include "VariableDegreeSpline.h"

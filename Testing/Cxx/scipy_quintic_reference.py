@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Reference values of classical quintic splines from SciPy.
 
-The tensioned quintic B-splines of paper 000 with all shape parameters 1 are
+The tensioned quintic B-splines of Cravero, Manni & Sampoli with all shape parameters 1 are
 the classical quintic B-splines. For random 3D data on uneven knots this writes
 SciPy's values and derivatives 0..4 of
   basis  - BSpline(k=5) with given coefficients on the knots t_0..t_n extended

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ShapeSplines needs (idempotent, no prompts).
-# Needs root (or sudo) and apt-get. See DESIGN.md section 2 for why each is here.
+# Needs root (or sudo) and apt-get. find_package(ParaView) fails on the first
+# -dev package of ParaView's dependencies that is missing, hence the long list;
+# libvtk9-dev and python3-vtk9 would conflict with python3-paraview.
 set -euo pipefail
 
 packages=(
