@@ -6,12 +6,7 @@ set(prefix "${WORK_DIR}/prefix")
 # themselves, not through the environment.
 unset(ENV{LD_LIBRARY_PATH})
 
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result)
-  if (NOT result EQUAL 0)
-    message(FATAL_ERROR "failed (${result}): ${ARGN}")
-  endif ()
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/Run.cmake")
 
 # Installed, then moved: nothing may depend on where the install went first.
 run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/installed")

@@ -128,6 +128,20 @@ def style_scalar_bar(bar, title, position, length, fmt, font=16):
     bar.RangeLabelFormat = fmt
 
 
+def show_plain(source, view, representation, color, scale, z, **style):
+    """Shows source in one colour (no colour map), scaled, and moved along z so
+    that the parallel camera draws it in front of (z > 0) or behind the rest."""
+    shown = Show(source, view)
+    shown.SetRepresentationType(representation)
+    shown.ColorArrayName = [None, ""]
+    shown.AmbientColor = shown.DiffuseColor = color
+    shown.Scale = scale
+    shown.Position = [0.0, 0.0, z]
+    for name, value in style.items():
+        setattr(shown, name, value)
+    return shown
+
+
 def caption(view, text, size=15):
     shown = Show(Text(Text=text), view)
     shown.WindowLocation = "Upper Left Corner"
@@ -325,27 +339,12 @@ for cell, proxy, fitted, title in (
     view = white_render_view(akima_w, akima_h)
     AssignViewToLayout(view, layout, cell)
     # Cut above the zoom so the rise does not run through the caption.
-    polygon = Show(below_zoom(reader("akima.vtp")), view)
-    polygon.SetRepresentationType("Wireframe")
-    polygon.ColorArrayName = [None, ""]
-    polygon.AmbientColor = polygon.DiffuseColor = [0.7, 0.7, 0.7]
-    polygon.LineWidth = 2.0
-    polygon.Scale = akima_scale
-    polygon.Position = [0.0, 0.0, -20.0]
-    line = Show(below_zoom(proxy), view)
-    line.ColorArrayName = [None, ""]
-    line.AmbientColor = line.DiffuseColor = [0.1, 0.3, 0.8]
-    line.LineWidth = 4.0
-    line.Ambient, line.Diffuse = 1.0, 0.0
-    line.Scale = akima_scale
-    dots = Show(akima_src, view)
-    dots.SetRepresentationType("Points")
-    dots.ColorArrayName = [None, ""]
-    dots.AmbientColor = dots.DiffuseColor = [0.9, 0.0, 0.9]
-    dots.PointSize = 12.0
-    dots.RenderPointsAsSpheres = 1
-    dots.Scale = akima_scale
-    dots.Position = [0.0, 0.0, 20.0]
+    show_plain(below_zoom(reader("akima.vtp")), view, "Wireframe", [0.7, 0.7, 0.7], akima_scale, -20.0,
+               LineWidth=2.0)
+    show_plain(below_zoom(proxy), view, "Surface", [0.1, 0.3, 0.8], akima_scale, 0.0, LineWidth=4.0,
+               Ambient=1.0, Diffuse=0.0)
+    show_plain(akima_src, view, "Points", [0.9, 0.0, 0.9], akima_scale, 20.0, PointSize=12.0,
+               RenderPointsAsSpheres=1)
     lowest = vtk_to_numpy(fitted.GetPoints().GetData())[:, 1].min()
     caption(view, "%s: ShapeViolations %d\nthe data never go below y = 10; the curve goes down to y = %.3f\n"
                   "(zoom on x 0 .. 10.5, y 9.85 .. 10.6, y drawn 10x more than x; magenta: data)"
@@ -367,13 +366,8 @@ fine_curve = servermanager.Fetch(fine)
 W, H = 800, 600
 view = white_render_view(W, H)
 stretch = [AKIMA_X_STRETCH, 1.0, 1.0]
-polygon = Show(reader("akima.vtp"), view)  # a second reader: Show gives one representation per source
-polygon.SetRepresentationType("Wireframe")
-polygon.ColorArrayName = [None, ""]
-polygon.AmbientColor = polygon.DiffuseColor = [0.6, 0.6, 0.6]
-polygon.LineWidth = 2.0
-polygon.Scale = stretch
-polygon.Position = [0.0, 0.0, -20.0]
+# A second reader: Show gives one representation per source.
+show_plain(reader("akima.vtp"), view, "Wireframe", [0.6, 0.6, 0.6], stretch, -20.0, LineWidth=2.0)
 line = Show(fine, view)
 ColorBy(line, ("POINTS", "Curvature"))
 lut = GetColorTransferFunction("Curvature")
@@ -383,14 +377,7 @@ lut.RescaleTransferFunction(0.0, 0.5)
 line.LineWidth = 6.0
 line.Ambient, line.Diffuse = 1.0, 0.0  # unlit: the colours are the colour map's
 line.Scale = stretch
-points = Show(src, view)
-points.SetRepresentationType("Points")
-points.ColorArrayName = [None, ""]
-points.AmbientColor = points.DiffuseColor = [0.9, 0.0, 0.9]
-points.PointSize = 14.0
-points.RenderPointsAsSpheres = 1
-points.Scale = stretch
-points.Position = [0.0, 0.0, 20.0]
+show_plain(src, view, "Points", [0.9, 0.0, 0.9], stretch, 20.0, PointSize=14.0, RenderPointsAsSpheres=1)
 bar = GetScalarBar(lut, view)
 style_scalar_bar(bar, "Curvature", [0.86, 0.15], 0.65, "%-#.1f", font=15)
 bar.UseCustomLabels = 1
