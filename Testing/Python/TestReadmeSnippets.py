@@ -1,14 +1,18 @@
-"""Runs every code block of README.md that is tagged for testing, as a user
-would run it from the repository:
+"""Runs every code block of README.md and of docs/*.md that is tagged for
+testing, as a user would run it from the repository:
     <!-- test: pvpython -->   a pvpython script
     <!-- test: python -->     Debian's python3 with the build's site-packages
     <!-- test: shell -->      sh, with the build's bin/ on PATH
     <!-- test: cpp FILE -->   the block appears verbatim in FILE (which another
                               test compiles and runs)
     <!-- test: file FILE -->  the block is FILE, whole
+The README must hold a snippet of every kind (one per route: pvpython, Python,
+command line, C++ and its CMake recipe); the longer material in docs/ is
+tested the same way.
 Usage: TestReadmeSnippets.py --source DIR --build DIR --temp DIR --pvpython EXE --python EXE
 """
 import argparse
+import glob
 import os
 import re
 import shutil
@@ -23,9 +27,21 @@ parser.add_argument("--pvpython", required=True)
 parser.add_argument("--python", required=True)
 args = parser.parse_args()
 
-with open(os.path.join(args.source, "README.md")) as f:
-    readme = f.read()
-snippets = re.findall(r"<!-- test: (\w+)([^>]*?) -->\n```\w*\n(.*?)```", readme, re.S)
+# The README first, then the docs/ pages in name order.
+documents = ["README.md"] + sorted(os.path.relpath(path, args.source) for path in
+                                   glob.glob(os.path.join(args.source, "docs", "*.md")))
+snippets = []
+malformed = []
+for document in documents:
+    with open(os.path.join(args.source, document)) as f:
+        text = f.read()
+    found = re.findall(r"<!-- test: (\w+)([^>]*?) -->\n```\w*\n(.*?)```", text, re.S)
+    snippets += [(document, kind, target, code) for kind, target, code in found]
+    # A tag (at the start of a line) not followed by a code block would leave
+    # its block untested.
+    tags = len(re.findall(r"^<!-- test:", text, re.M))
+    if tags != len(found):
+        malformed.append("%s: %d test tags, %d tagged code blocks" % (document, tags, len(found)))
 work = os.path.join(args.temp, "readme")
 shutil.rmtree(work, ignore_errors=True)
 # The snippets use repository paths (Data/, Testing/, build/...): run them in
@@ -40,11 +56,12 @@ env["HOME"] = work
 env["PYTHONPATH"] = os.path.join(args.build, "lib", "python3.11", "site-packages")
 env["PATH"] = os.path.join(args.build, "bin") + os.pathsep + env["PATH"]
 
-failures = []
-kinds = set()
-for number, (kind, target, code) in enumerate(snippets):
-    kinds.add(kind)
-    label = "README snippet %d (%s)" % (number + 1, kind)
+failures = list(malformed)
+readme_kinds = set()
+for number, (document, kind, target, code) in enumerate(snippets):
+    if document == "README.md":
+        readme_kinds.add(kind)
+    label = "%s snippet %d (%s)" % (document, number + 1, kind)
     if kind in ("cpp", "file"):
         with open(os.path.join(args.source, target.strip())) as f:
             text = f.read()
@@ -69,9 +86,11 @@ for number, (kind, target, code) in enumerate(snippets):
         failures.append(label)
 
 for kind in ("pvpython", "python", "shell", "cpp", "file"):
-    if kind not in kinds:
+    if kind not in readme_kinds:
         failures.append("no %s snippet found in README.md" % kind)
 if failures:
     print("\nFAILED:\n  " + "\n  ".join(failures))
     sys.exit(1)
-print("\nAll %d README snippets ran." % len(snippets))
+print("\nAll %d snippets ran (%s)." % (len(snippets), ", ".join(
+    "%s: %d" % (document, sum(1 for s in snippets if s[0] == document))
+    for document in documents if any(s[0] == document for s in snippets))))
