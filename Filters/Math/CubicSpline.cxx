@@ -118,15 +118,7 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
     throw std::invalid_argument("cubic spline: too few points or knots of the wrong size");
   }
   auto y = [&](int i) { return points[i % n]; };
-  std::vector<double> h(spans);
-  for (int i = 0; i < spans; ++i)
-  {
-    h[i] = knots[i + 1] - knots[i];
-    if (!(h[i] > 0.0))
-    {
-      throw std::invalid_argument("cubic spline: knots must increase strictly");
-    }
-  }
+  const std::vector<double> h = knotSpacings(knots, "cubic spline");
   auto slope = [&](int i) -> Vec3 { return (y(i + 1) - y(i)) / h[i]; };
 
   Eigen::MatrixX3d moments(n, 3);

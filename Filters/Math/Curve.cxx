@@ -62,4 +62,17 @@ std::vector<SpanParameter> TrimmedCurve::spanParameters() const
   }
   return parameters;
 }
+std::vector<double> knotSpacings(const std::vector<double>& knots, const std::string& family)
+{
+  std::vector<double> h(knots.size() > 1 ? knots.size() - 1 : 0);
+  for (size_t i = 0; i < h.size(); ++i)
+  {
+    h[i] = knots[i + 1] - knots[i];
+    if (!(h[i] > 0.0) || !std::isfinite(h[i]))
+    {
+      throw std::invalid_argument(family + ": knots must increase strictly");
+    }
+  }
+  return h;
+}
 } // namespace shapesplines

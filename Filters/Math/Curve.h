@@ -183,6 +183,10 @@ private:
   std::unique_ptr<Curve> Whole;
   int First;
 };
+
+/// The spacings h_i = knots[i + 1] - knots[i]; throws std::invalid_argument
+/// "<family>: knots must increase strictly" unless each is positive and finite.
+std::vector<double> knotSpacings(const std::vector<double>& knots, const std::string& family);
 } // namespace shapesplines
 
 #endif

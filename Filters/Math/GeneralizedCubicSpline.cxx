@@ -290,15 +290,7 @@ GeneralizedCubicSpline GeneralizedCubicSpline::interpolate(const std::vector<Vec
   {
     throw std::invalid_argument("generalized cubic: too few points, or knots or kernels of the wrong size");
   }
-  std::vector<double> h(spans);
-  for (int k = 0; k < spans; ++k)
-  {
-    h[k] = knots[k + 1] - knots[k];
-    if (!(h[k] > 0.0))
-    {
-      throw std::invalid_argument("generalized cubic: knots must increase strictly");
-    }
-  }
+  const std::vector<double> h = knotSpacings(knots, "generalized cubic");
   auto y = [&](int i) -> const Vec3& { return points[i % n]; };
   auto slope = [&](int k) -> Vec3 { return (y(k + 1) - y(k)) / h[k]; };
   // Span k with second derivatives M_k, M_k+1 (in x) at its ends:

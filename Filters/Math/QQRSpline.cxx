@@ -255,15 +255,7 @@ QQRBSplineBasis::QQRBSplineBasis(
     throw std::invalid_argument(
       "qqr B-spline basis: x, y and z need one value per knot interval (" + std::to_string(m) + ")");
   }
-  this->H.resize(m);
-  for (int i = 0; i < m; ++i)
-  {
-    this->H[i] = this->Knots[i + 1] - this->Knots[i];
-    if (!(this->H[i] > 0.0))
-    {
-      throw std::invalid_argument("qqr B-spline basis: knots must increase strictly");
-    }
-  }
+  this->H = knotSpacings(this->Knots, "qqr B-spline basis");
 }
 
 double QQRBSplineBasis::mu(int i) const
@@ -648,15 +640,7 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     throw std::invalid_argument("qqr: at least 2 points (3 closed) and one knot per point (plus "
                                 "the closing knot of a closed curve) expected");
   }
-  std::vector<double> dh(spans);
-  for (int k = 0; k < spans; ++k)
-  {
-    dh[k] = knots[k + 1] - knots[k];
-    if (!(dh[k] > 0.0) || !std::isfinite(dh[k]))
-    {
-      throw std::invalid_argument("qqr: knots must increase strictly");
-    }
-  }
+  const std::vector<double> dh = knotSpacings(knots, "qqr");
   for (const double value : { local.X, local.Y, local.Z })
   {
     if (std::isinf(value))

@@ -228,17 +228,7 @@ std::vector<SpanWeights> spanWeights(const Lookup& k)
 
 Lookup lookup(const std::vector<double>& t, const QuinticParameters& parameters, bool closed)
 {
-  Lookup k{ {}, parameters, closed };
-  for (size_t i = 0; i + 1 < t.size(); ++i)
-  {
-    const double h = t[i + 1] - t[i];
-    if (!(h > 0.0))
-    {
-      throw std::invalid_argument("tension quintic spline: knots must increase strictly");
-    }
-    k.H.push_back(h);
-  }
-  return k;
+  return Lookup{ knotSpacings(t, "tension quintic spline"), parameters, closed };
 }
 
 /// Where the de Boor point of index m (from -2 for open curves) is stored.

@@ -216,13 +216,7 @@ void checkParameters(const std::vector<double>& knots, bool closed, const Variab
     throw std::invalid_argument(
       "variable degree spline: need a degree and a tension per knot and at least one span");
   }
-  for (size_t i = 0; i + 1 < knots.size(); ++i)
-  {
-    if (!(knots[i + 1] > knots[i]))
-    {
-      throw std::invalid_argument("variable degree spline: knots must increase strictly");
-    }
-  }
+  knotSpacings(knots, "variable degree spline"); // checks them
   for (size_t i = 0; i < knotCount; ++i)
   {
     if (!(p.Degree[i] >= LowestVariableDegree) || !std::isfinite(p.Degree[i]) ||
