@@ -1,7 +1,7 @@
 #include "vtkCurvatureCombFilter.h"
 
 #include "LineCells.h"
-
+#include "OutputArrays.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -18,8 +18,8 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkCurvatureCombFilter);
@@ -55,6 +55,98 @@ std::vector<CombLine> ToothSamples(const std::vector<shapesplines::LineCell>& ce
     result.push_back(std::move(line));
   }
   return result;
+}
+
+/// The automatic scale follows the 95th percentile tooth, not the longest:
+/// one spike (a near-corner, the noise at an end) would shrink all others.
+double TypicalToothValue(const std::vector<CombLine>& lines, vtkDataArray* values)
+{
+  std::vector<double> teethValues;
+  for (const CombLine& line : lines)
+  {
+    for (const vtkIdType id : line.Teeth)
+    {
+      teethValues.push_back(values->GetComponent(id, 0));
+    }
+  }
+  return shapesplines::typicalMagnitude(std::move(teethValues));
+}
+
+/// The comb's geometry: a two-point cell per tooth (CombPart 0), then an
+/// envelope per line (CombPart 1).
+struct Comb
+{
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkDoubleArray> Value;
+  vtkNew<vtkCellArray> Cells;
+  vtkNew<vtkUnsignedCharArray> Part;
+  std::vector<std::vector<vtkIdType>> Tips; ///< of each line's teeth
+
+  Comb()
+  {
+    this->Points->SetDataTypeToDouble();
+    this->Value->SetName("CombValue");
+    this->Part->SetName("CombPart");
+  }
+};
+
+/// Draws the teeth of every line; a tooth whose length or direction is not
+/// finite is drawn with zero length and value. Returns how many were.
+vtkIdType DrawTeeth(const std::vector<CombLine>& lines, vtkPolyData* input, vtkDataArray* values,
+  vtkDataArray* directions, double scale, bool torsionComb, Comb& comb)
+{
+  vtkIdType undefined = 0;
+  comb.Tips.resize(lines.size());
+  for (size_t l = 0; l < lines.size(); ++l)
+  {
+    for (const vtkIdType id : lines[l].Teeth)
+    {
+      double base[3], direction[3], tip[3];
+      input->GetPoint(id, base);
+      directions->GetTuple(id, direction);
+      double value = values->GetComponent(id, 0);
+      // Curvature points to the centre of curvature; the comb points away from it.
+      const double sign = torsionComb ? 1.0 : -1.0;
+      const double length = sign * scale * value;
+      const bool defined = std::isfinite(length) && std::isfinite(direction[0]) &&
+        std::isfinite(direction[1]) && std::isfinite(direction[2]);
+      if (!defined)
+      {
+        ++undefined;
+        value = 0.0;
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        tip[c] = defined ? base[c] + length * direction[c] : base[c];
+      }
+      const vtkIdType tooth[2] = { comb.Points->InsertNextPoint(base),
+        comb.Points->InsertNextPoint(tip) };
+      comb.Value->InsertNextValue(value);
+      comb.Value->InsertNextValue(value);
+      comb.Cells->InsertNextCell(2, tooth);
+      comb.Part->InsertNextValue(0);
+      comb.Tips[l].push_back(tooth[1]);
+    }
+  }
+  return undefined;
+}
+
+/// Joins the tips of each line's teeth (closed lines' back to their first).
+void DrawEnvelopes(const std::vector<CombLine>& lines, Comb& comb)
+{
+  for (size_t l = 0; l < lines.size(); ++l)
+  {
+    std::vector<vtkIdType> envelope = comb.Tips[l];
+    if (lines[l].Closed && !envelope.empty())
+    {
+      envelope.push_back(envelope.front());
+    }
+    if (envelope.size() >= 2)
+    {
+      comb.Cells->InsertNextCell(static_cast<vtkIdType>(envelope.size()), envelope.data());
+      comb.Part->InsertNextValue(1);
+    }
+  }
 }
 } // namespace
 
@@ -112,89 +204,14 @@ int vtkCurvatureCombFilter::RequestData(
     }
   }
   const std::vector<CombLine> lines = ToothSamples(inputLines, this->Stride);
-  // The automatic scale follows the 95th percentile tooth, not the longest:
-  // one spike (a near-corner, the noise at an end) would shrink all others.
-  std::vector<double> magnitudes;
-  for (const CombLine& line : lines)
-  {
-    for (const vtkIdType id : line.Teeth)
-    {
-      const double v = values->GetComponent(id, 0);
-      if (std::isfinite(v))
-      {
-        magnitudes.push_back(std::abs(v));
-      }
-    }
-  }
-  double typical = 0.0;
-  if (!magnitudes.empty())
-  {
-    const auto rank = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * (magnitudes.size() - 1));
-    std::nth_element(magnitudes.begin(), rank, magnitudes.end());
-    typical = *rank;
-  }
-  const double diagonal = input->GetLength();
-  double scale = this->ScaleFactor;
-  if (this->ScaleMode == AUTOMATIC)
-  {
-    scale = typical > 0.0 && std::isfinite(diagonal) ? this->RelativeToothLength * diagonal / typical
-                                                     : 0.0;
-  }
+  const double scale = this->ToothScale(TypicalToothValue(lines, values), input->GetLength());
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> combValue;
-  combValue->SetName("CombValue");
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkUnsignedCharArray> part;
-  part->SetName("CombPart");
-  std::vector<std::vector<vtkIdType>> tips(lines.size());
-  vtkIdType undefined = 0;
-  for (size_t l = 0; l < lines.size(); ++l)
-  {
-    for (const vtkIdType id : lines[l].Teeth)
-    {
-      double base[3], direction[3], tip[3];
-      input->GetPoint(id, base);
-      directions->GetTuple(id, direction);
-      double value = values->GetComponent(id, 0);
-      // Curvature points to the centre of curvature; the comb points away from it.
-      const double sign = torsionComb ? 1.0 : -1.0;
-      const double length = sign * scale * value;
-      const bool defined = std::isfinite(length) && std::isfinite(direction[0]) &&
-        std::isfinite(direction[1]) && std::isfinite(direction[2]);
-      if (!defined)
-      {
-        ++undefined;
-        value = 0.0;
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        tip[c] = defined ? base[c] + length * direction[c] : base[c];
-      }
-      const vtkIdType tooth[2] = { points->InsertNextPoint(base), points->InsertNextPoint(tip) };
-      combValue->InsertNextValue(value);
-      combValue->InsertNextValue(value);
-      cells->InsertNextCell(2, tooth);
-      part->InsertNextValue(0);
-      tips[l].push_back(tooth[1]);
-    }
-  }
+  Comb comb;
+  const vtkIdType undefined =
+    DrawTeeth(lines, input, values, directions, scale, torsionComb, comb);
   if (this->Envelope)
   {
-    for (size_t l = 0; l < lines.size(); ++l)
-    {
-      std::vector<vtkIdType> envelope = tips[l];
-      if (lines[l].Closed && !envelope.empty())
-      {
-        envelope.push_back(envelope.front());
-      }
-      if (envelope.size() >= 2)
-      {
-        cells->InsertNextCell(static_cast<vtkIdType>(envelope.size()), envelope.data());
-        part->InsertNextValue(1);
-      }
-    }
+    DrawEnvelopes(lines, comb);
   }
   if (undefined > 0)
   {
@@ -202,16 +219,27 @@ int vtkCurvatureCombFilter::RequestData(
                     << directionName << " drawn with zero length.");
   }
 
-  output->SetPoints(points);
-  output->SetLines(cells);
-  output->GetPointData()->AddArray(combValue);
+  output->SetPoints(comb.Points);
+  output->SetLines(comb.Cells);
+  output->GetPointData()->AddArray(comb.Value);
   output->GetPointData()->SetActiveScalars("CombValue");
-  output->GetCellData()->AddArray(part);
+  output->GetCellData()->AddArray(comb.Part);
   vtkNew<vtkDoubleArray> scaleUsed;
   scaleUsed->SetName("CombScale");
   scaleUsed->InsertNextValue(scale);
   output->GetFieldData()->AddArray(scaleUsed);
   return 1;
+}
+
+double vtkCurvatureCombFilter::ToothScale(double typicalValue, double diagonal) const
+{
+  if (this->ScaleMode != AUTOMATIC)
+  {
+    return this->ScaleFactor;
+  }
+  return typicalValue > 0.0 && std::isfinite(diagonal)
+    ? this->RelativeToothLength * diagonal / typicalValue
+    : 0.0;
 }
 
 void vtkCurvatureCombFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -120,6 +120,10 @@ protected:
   bool Envelope = true;
 
 private:
+  /// Tooth length per unit of value: ScaleFactor, or in AUTOMATIC mode the one
+  /// that makes the typical value's tooth RelativeToothLength of the diagonal.
+  double ToothScale(double typicalValue, double diagonal) const;
+
   vtkCurvatureCombFilter(const vtkCurvatureCombFilter&) = delete;
   void operator=(const vtkCurvatureCombFilter&) = delete;
 };

@@ -1,6 +1,7 @@
 #include "vtkPolylineShapeAnalysis.h"
 
 #include "LineCells.h"
+#include "OutputArrays.h"
 #include "ShapeAnalysis.h"
 
 #include "vtkCellArray.h"
@@ -24,7 +25,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,10 +38,7 @@ using shapesplines::Vec3;
 template <typename Array>
 vtkSmartPointer<Array> NewZeroArray(const char* name, int components, vtkIdType tuples)
 {
-  auto array = vtkSmartPointer<Array>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
+  auto array = shapesplines::newArray<Array>(name, components, tuples);
   array->Fill(0);
   return array;
 }
@@ -87,6 +85,156 @@ std::vector<shapesplines::AuditSample> CurveSamples(
   }
   shapesplines::markKnots(samples, closed);
   return samples;
+}
+
+/// The discrete shape of the data, per input point (0 off the lines).
+struct DiscreteShapeArrays
+{
+  explicit DiscreteShapeArrays(vtkIdType points)
+    : Curvature(NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, points))
+    , Torsion(NewZeroArray<vtkDoubleArray>("DiscreteTorsion", 1, points))
+    , Binormal(NewZeroArray<vtkDoubleArray>("DiscreteBinormal", 3, points))
+    , Collinear(NewZeroArray<vtkUnsignedCharArray>("Collinear", 1, points))
+    , Convex(NewZeroArray<vtkUnsignedCharArray>("Convex", 1, points))
+    , Coplanar(NewZeroArray<vtkUnsignedCharArray>("Coplanar", 1, points))
+  {
+  }
+
+  /// One line's point ids, of which its cleaned data kept those at SourceIndex.
+  void Write(const std::vector<vtkIdType>& ids, const shapesplines::CleanPolyline& data,
+    const shapesplines::DiscreteShape& shape)
+  {
+    // Dropped repeats take the values of the point they repeat.
+    for (size_t i = 0, kept = 0; i < ids.size(); ++i)
+    {
+      while (
+        kept + 1 < data.SourceIndex.size() && data.SourceIndex[kept + 1] <= static_cast<int>(i))
+      {
+        ++kept;
+      }
+      if (data.SourceIndex.empty())
+      {
+        break;
+      }
+      this->Curvature->SetValue(ids[i], shape.Curvature[kept]);
+      this->Binormal->SetTuple(ids[i], shape.Binormal[kept].data());
+      this->Collinear->SetValue(ids[i], shape.Collinear[kept]);
+      this->Convex->SetValue(ids[i], shape.Convex[kept]);
+      if (kept < shape.Torsion.size())
+      {
+        this->Torsion->SetValue(ids[i], shape.Torsion[kept]);
+        this->Coplanar->SetValue(ids[i], shape.Coplanar[kept]);
+      }
+    }
+  }
+
+  void AddTo(vtkPointData* pointData) const
+  {
+    shapesplines::addArrays(
+      pointData, { this->Curvature, this->Torsion, this->Binormal, this->Collinear, this->Convex,
+                   this->Coplanar });
+  }
+
+  vtkSmartPointer<vtkDoubleArray> Curvature, Torsion, Binormal;
+  vtkSmartPointer<vtkUnsignedCharArray> Collinear, Convex, Coplanar;
+};
+
+/// The audit's results: ViolationMask per point, counts per line.
+struct AuditArrays
+{
+  static constexpr int Criteria = static_cast<int>(shapesplines::ShapeCriterion::Count);
+
+  explicit AuditArrays(vtkIdType points)
+    : Mask(NewZeroArray<vtkIntArray>("ViolationMask", 1, points))
+    , Total(NewZeroArray<vtkIntArray>("ShapeViolations", 1, 0))
+    , Preserving(NewZeroArray<vtkUnsignedCharArray>("ShapePreserving", 1, 0))
+  {
+    const std::array<const char*, Criteria> countNames = { "CollinearityViolations",
+      "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",
+      "TorsionSignAtKnotViolations", "TorsionSignOnSpanViolations" };
+    for (int c = 0; c < Criteria; ++c)
+    {
+      this->Counts[c] = NewZeroArray<vtkIntArray>(countNames[c], 1, 0);
+    }
+  }
+
+  /// The next line's audit (none when it could not be audited), its point
+  /// ids and which of them its cleaned data kept.
+  void AddLine(const std::optional<shapesplines::ShapeAudit>& result,
+    const std::vector<vtkIdType>& ids, const std::vector<int>& sourceIndex)
+  {
+    for (size_t j = 0; result && j < result->SpanMask.size(); ++j)
+    {
+      this->Mask->SetValue(ids[sourceIndex[j]], static_cast<int>(result->SpanMask[j]));
+    }
+    // A line that could not be audited must not read as shape-preserving.
+    this->Total->InsertNextValue(result ? result->violations() : -1);
+    this->Preserving->InsertNextValue(result && result->preserving() ? 1 : 0);
+    for (int c = 0; c < Criteria; ++c)
+    {
+      this->Counts[c]->InsertNextValue(result ? result->Failures[c] : -1);
+    }
+  }
+
+  void AddCountsTo(vtkCellData* cellData) const
+  {
+    shapesplines::addArrays(cellData, { this->Total, this->Preserving });
+    for (const auto& count : this->Counts)
+    {
+      cellData->AddArray(count);
+    }
+  }
+
+  vtkSmartPointer<vtkIntArray> Mask, Total;
+  vtkSmartPointer<vtkUnsignedCharArray> Preserving;
+  std::array<vtkSmartPointer<vtkIntArray>, Criteria> Counts;
+};
+
+/// A line's points; false, with the error reported, when the line is damaged
+/// or a point is not finite.
+bool ReadLinePoints(vtkObject* self, vtkPolyData* input, const shapesplines::LineCell& line,
+  std::vector<Vec3>& points)
+{
+  const auto& ids = line.PointIds;
+  points.resize(ids.size());
+  bool finite = true;
+  for (size_t i = 0; i < ids.size(); ++i)
+  {
+    input->GetPoint(ids[i], points[i].data());
+    finite = finite && points[i].allFinite();
+  }
+  if (!line.Error.empty())
+  {
+    vtkErrorWithObjectMacro(
+      self, "Line (cell " << line.CellId << ") skipped: " << line.Error << ".");
+    return false;
+  }
+  if (!finite)
+  {
+    vtkErrorWithObjectMacro(
+      self, "Line (cell " << line.CellId << ") skipped: a point is not finite.");
+  }
+  return finite;
+}
+
+/// The audit of one data line against its curve line; none, with a warning,
+/// when their spans or closure differ.
+std::optional<shapesplines::ShapeAudit> AuditLine(vtkObject* self,
+  const shapesplines::LineCell& line, vtkPolyData* curve, const shapesplines::LineCell& curveLine,
+  const shapesplines::CleanPolyline& data, const shapesplines::DiscreteShape& shape,
+  const shapesplines::ShapeTolerances& tolerances)
+{
+  bool curveClosed = false;
+  const auto samples = CurveSamples(curve, curveLine.PointIds, curveClosed);
+  if (samples.back().Span + 1 != data.numberOfSpans() || curveClosed != data.Closed)
+  {
+    vtkWarningWithObjectMacro(self, "Line (cell " << line.CellId << "): the curve has "
+                                    << samples.back().Span + 1 << " spans for "
+                                    << data.numberOfSpans()
+                                    << " data spans (or differs in closure): not audited.");
+    return std::nullopt;
+  }
+  return shapesplines::auditShape(data, shape, samples, tolerances);
 }
 } // namespace
 
@@ -160,10 +308,9 @@ int vtkPolylineShapeAnalysis::RequestData(
     return 1;
   }
   auto* curveTree = vtkDataObjectTree::SafeDownCast(curveObject);
-  auto* curvePolyData = vtkPolyData::SafeDownCast(curveObject);
   if (auto* input = vtkPolyData::SafeDownCast(inputObject))
   {
-    vtkPolyData* curve = curvePolyData;
+    vtkPolyData* curve = vtkPolyData::SafeDownCast(curveObject);
     if (curveTree)
     {
       // One data set against a composite curve: its only poly data block.
@@ -190,6 +337,15 @@ int vtkPolylineShapeAnalysis::RequestData(
     vtkErrorMacro("Input 0 must be poly data or a composite of poly data.");
     return 0;
   }
+  this->AnalyseBlocks(inputTree, curveObject, outputTree);
+  return 1;
+}
+
+void vtkPolylineShapeAnalysis::AnalyseBlocks(
+  vtkDataObjectTree* inputTree, vtkDataObject* curveObject, vtkDataObjectTree* outputTree)
+{
+  auto* curveTree = vtkDataObjectTree::SafeDownCast(curveObject);
+  auto* curvePolyData = vtkPolyData::SafeDownCast(curveObject);
   outputTree->CopyStructure(inputTree);
   const size_t dataBlocks = vtkCompositeDataSet::GetDataSets<vtkPolyData>(inputTree).size();
   auto it = vtk::TakeSmartPointer(inputTree->NewTreeIterator());
@@ -228,19 +384,13 @@ int vtkPolylineShapeAnalysis::RequestData(
     this->Analyse(block, curve, analysed);
     outputTree->SetDataSet(it, analysed);
   }
-  return 1;
 }
 
 void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, vtkPolyData* output)
 {
   output->ShallowCopy(input);
   const vtkIdType nPoints = input->GetNumberOfPoints();
-  auto curvature = NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, nPoints);
-  auto torsion = NewZeroArray<vtkDoubleArray>("DiscreteTorsion", 1, nPoints);
-  auto binormal = NewZeroArray<vtkDoubleArray>("DiscreteBinormal", 3, nPoints);
-  auto collinear = NewZeroArray<vtkUnsignedCharArray>("Collinear", 1, nPoints);
-  auto convex = NewZeroArray<vtkUnsignedCharArray>("Convex", 1, nPoints);
-  auto coplanar = NewZeroArray<vtkUnsignedCharArray>("Coplanar", 1, nPoints);
+  DiscreteShapeArrays discrete(nPoints);
   if (input->GetNumberOfLines() == 0)
   {
     vtkWarningMacro("Input has no lines: nothing to analyse.");
@@ -261,125 +411,48 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
                   "must be the output of a Shape Splines curve filter. Nothing audited "
                   "(ShapeViolations -1).");
   }
-  auto mask = NewZeroArray<vtkIntArray>("ViolationMask", 1, nPoints);
-  auto total = NewZeroArray<vtkIntArray>("ShapeViolations", 1, 0);
-  auto preserving = NewZeroArray<vtkUnsignedCharArray>("ShapePreserving", 1, 0);
-  constexpr int criteria = static_cast<int>(shapesplines::ShapeCriterion::Count);
-  std::array<vtkSmartPointer<vtkIntArray>, criteria> counts;
-  const std::array<const char*, criteria> countNames = { "CollinearityViolations",
-    "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",
-    "TorsionSignAtKnotViolations", "TorsionSignOnSpanViolations" };
-  for (int c = 0; c < criteria; ++c)
-  {
-    counts[c] = NewZeroArray<vtkIntArray>(countNames[c], 1, 0);
-  }
+  AuditArrays audits(nPoints);
 
   shapesplines::ShapeTolerances tolerances;
   tolerances.Data = this->DataShapeTolerance;
   tolerances.Curve = this->CurveShapeTolerance;
   for (size_t l = 0; l < lines.size(); ++l)
   {
-    const auto& ids = lines[l].PointIds;
-    const vtkIdType cellId = lines[l].CellId;
-    std::vector<Vec3> points(ids.size());
-    bool finite = true;
-    for (size_t i = 0; i < ids.size(); ++i)
-    {
-      input->GetPoint(ids[i], points[i].data());
-      finite = finite && points[i].allFinite();
-    }
-    if (!lines[l].Error.empty())
-    {
-      vtkErrorMacro("Line (cell " << cellId << ") skipped: " << lines[l].Error << ".");
-      finite = false;
-    }
-    else if (!finite)
-    {
-      vtkErrorMacro("Line (cell " << cellId << ") skipped: a point is not finite.");
-    }
+    std::vector<Vec3> points;
+    const bool finite = ReadLinePoints(this, input, lines[l], points);
     const auto data = shapesplines::cleanPolyline(points, this->Closed);
     const auto shape = shapesplines::discreteShape(data, tolerances);
-    // Dropped repeats take the values of the point they repeat.
-    for (size_t i = 0, kept = 0; finite && i < ids.size(); ++i)
+    if (finite)
     {
-      while (kept + 1 < data.SourceIndex.size() && data.SourceIndex[kept + 1] <= static_cast<int>(i))
-      {
-        ++kept;
-      }
-      if (data.SourceIndex.empty())
-      {
-        break;
-      }
-      curvature->SetValue(ids[i], shape.Curvature[kept]);
-      binormal->SetTuple(ids[i], shape.Binormal[kept].data());
-      collinear->SetValue(ids[i], shape.Collinear[kept]);
-      convex->SetValue(ids[i], shape.Convex[kept]);
-      if (kept < shape.Torsion.size())
-      {
-        torsion->SetValue(ids[i], shape.Torsion[kept]);
-        coplanar->SetValue(ids[i], shape.Coplanar[kept]);
-      }
+      discrete.Write(lines[l].PointIds, data, shape);
     }
     if (!audit)
     {
       continue;
     }
-    shapesplines::ShapeAudit result;
-    bool audited = false;
-    if (l < curves.size() && !curves[l].Error.empty())
+    const shapesplines::LineCell* curveLine = l < curves.size() ? &curves[l] : nullptr;
+    std::optional<shapesplines::ShapeAudit> result;
+    if (curveLine && !curveLine->Error.empty())
     {
-      vtkErrorMacro("Curve line (cell " << curves[l].CellId << ") not audited: " << curves[l].Error
-                                        << ".");
+      vtkErrorMacro("Curve line (cell " << curveLine->CellId << ") not audited: "
+                                        << curveLine->Error << ".");
     }
-    else if (finite && curveReadable && l < curves.size() && data.numberOfSpans() > 0 &&
-      !curves[l].PointIds.empty())
+    else if (finite && curveReadable && curveLine && data.numberOfSpans() > 0 &&
+      !curveLine->PointIds.empty())
     {
-      bool curveClosed = false;
-      const auto samples = CurveSamples(curve, curves[l].PointIds, curveClosed);
-      if (samples.back().Span + 1 != data.numberOfSpans() || curveClosed != data.Closed)
-      {
-        vtkWarningMacro("Line (cell " << cellId << "): the curve has " << samples.back().Span + 1
-                                      << " spans for " << data.numberOfSpans()
-                                      << " data spans (or differs in closure): not audited.");
-      }
-      else
-      {
-        result = shapesplines::auditShape(data, shape, samples, tolerances);
-        audited = true;
-        for (size_t j = 0; j < result.SpanMask.size(); ++j)
-        {
-          mask->SetValue(ids[data.SourceIndex[j]], static_cast<int>(result.SpanMask[j]));
-        }
-      }
+      result = AuditLine(this, lines[l], curve, *curveLine, data, shape, tolerances);
     }
-    // A line that could not be audited must not read as shape-preserving.
-    total->InsertNextValue(audited ? result.violations() : -1);
-    preserving->InsertNextValue(audited && result.preserving() ? 1 : 0);
-    for (int c = 0; c < criteria; ++c)
-    {
-      counts[c]->InsertNextValue(audited ? result.Failures[c] : -1);
-    }
+    audits.AddLine(result, lines[l].PointIds, data.SourceIndex);
   }
 
-  vtkPointData* pd = output->GetPointData();
-  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{
-         curvature, torsion, binormal, collinear, convex, coplanar })
-  {
-    pd->AddArray(a);
-  }
+  discrete.AddTo(output->GetPointData());
   if (audit)
   {
-    pd->AddArray(mask);
+    output->GetPointData()->AddArray(audits.Mask);
     // Cell arrays only fit when every cell is a line.
     if (input->GetNumberOfCells() == input->GetNumberOfLines())
     {
-      vtkCellData* cd = output->GetCellData();
-      cd->AddArray(total);
-      cd->AddArray(preserving);
-      for (const auto& count : counts)
-      {
-        cd->AddArray(count);
-      }
+      audits.AddCountsTo(output->GetCellData());
     }
     else
     {

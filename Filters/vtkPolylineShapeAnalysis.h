@@ -38,6 +38,8 @@
 #include "ShapeSplinesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkDataObjectTree;
+
 class SHAPESPLINESFILTERS_EXPORT vtkPolylineShapeAnalysis : public vtkPolyDataAlgorithm
 {
 public:
@@ -94,6 +96,11 @@ protected:
 private:
   /// One poly data block against its curve (null: no audit).
   void Analyse(vtkPolyData* input, vtkPolyData* curve, vtkPolyData* output);
+
+  /// Each poly data block of a composite input against the curve's block at
+  /// the same place (or the one curve for a single data block).
+  void AnalyseBlocks(
+    vtkDataObjectTree* inputTree, vtkDataObject* curveObject, vtkDataObjectTree* outputTree);
 
   vtkPolylineShapeAnalysis(const vtkPolylineShapeAnalysis&) = delete;
   void operator=(const vtkPolylineShapeAnalysis&) = delete;

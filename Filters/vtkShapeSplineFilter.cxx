@@ -2,6 +2,7 @@
 
 #include "FitPolyline.h"
 #include "LineCells.h"
+#include "OutputArrays.h"
 #include "SparseSolve.h"
 
 #include "vtkCellArray.h"
@@ -31,6 +32,7 @@
 #include <initializer_list>
 #include <limits>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -54,14 +56,18 @@ struct LineWork
 
 vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkIdType tuples)
 {
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetName(name);
-  array->SetNumberOfComponents(components);
-  array->SetNumberOfTuples(tuples);
-  return array;
+  return shapesplines::newArray<vtkDoubleArray>(name, components, tuples);
 }
 
-std::vector<LineWork> GatherLines(vtkPolyData* input)
+/// Whether a setting's array name names an array: empty and "None" (what
+/// ParaView's array list sends for no array) do not.
+bool NamesAnArray(const char* name)
+{
+  return name && *name && std::string(name) != "None";
+}
+
+/// The input's line cells, named by their id.
+std::vector<LineWork> CellLines(vtkPolyData* input)
 {
   std::vector<LineWork> lines;
   for (auto& cell : shapesplines::lineCells(input))
@@ -81,7 +87,7 @@ std::vector<LineWork> GatherLines(vtkPolyData* input)
 /// one line of all the points.
 vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
 {
-  if (name && *name && std::string(name) != "None")
+  if (NamesAnArray(name))
   {
     return pointData->GetArray(name);
   }
@@ -103,23 +109,9 @@ vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
  */
 vtkSmartPointer<vtkDoubleArray> TorsionColorRange(vtkDoubleArray* torsion)
 {
-  std::vector<double> magnitudes;
-  magnitudes.reserve(static_cast<size_t>(torsion->GetNumberOfTuples()));
-  for (vtkIdType i = 0; i < torsion->GetNumberOfTuples(); ++i)
-  {
-    const double t = std::abs(torsion->GetValue(i));
-    if (std::isfinite(t))
-    {
-      magnitudes.push_back(t);
-    }
-  }
-  double typical = 0.0;
-  if (!magnitudes.empty())
-  {
-    const auto rank = magnitudes.begin() + static_cast<std::ptrdiff_t>(0.95 * (magnitudes.size() - 1));
-    std::nth_element(magnitudes.begin(), rank, magnitudes.end());
-    typical = *rank;
-  }
+  const double* values = torsion->GetPointer(0);
+  const double typical = shapesplines::typicalMagnitude(
+    std::vector<double>(values, values + torsion->GetNumberOfTuples()));
   auto range = NewArray("TorsionColorRange", 1, 2);
   range->SetValue(0, -typical);
   range->SetValue(1, typical);
@@ -382,6 +374,618 @@ std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
   }
   return text.str();
 }
+
+vtkIdType PointsOnLines(const std::vector<LineWork>& lines)
+{
+  vtkIdType points = 0;
+  for (const LineWork& line : lines)
+  {
+    points += static_cast<vtkIdType>(line.PointIds.size());
+  }
+  return points;
+}
+
+/// The lines of one run, gathered serially.
+struct InputLines
+{
+  std::vector<LineWork> Lines;
+  bool Connected = false;          ///< the input's points in order (Connect Points), no cells
+  vtkDataArray* LineIds = nullptr; ///< which connected line each point is on, if any
+};
+
+/**
+ * The input's line cells, or with ConnectPoints its points in order. None
+ * (reported) when the run ends there with an empty output.
+ */
+std::optional<InputLines> GatherInputLines(
+  vtkAlgorithm* self, vtkPolyData* input, bool connectPoints, const char* lineIdArrayName)
+{
+  // Points without cells, or with vertices only (a table's rows), become lines
+  // in point order when ConnectPoints is on; polygons' points do not.
+  const bool onlyPoints = input->GetNumberOfCells() == input->GetNumberOfVerts();
+  InputLines gathered;
+  gathered.Connected = onlyPoints && connectPoints;
+  if (input->GetNumberOfPoints() == 0 || (input->GetNumberOfLines() == 0 && !gathered.Connected))
+  {
+    vtkWarningWithObjectMacro(self, "Input has no lines: the output is empty."
+      << (input->GetNumberOfPoints() > 0 && onlyPoints
+             ? " Connect Points makes lines of its points in order."
+             : ""));
+    return std::nullopt;
+  }
+  if (gathered.Connected)
+  {
+    gathered.LineIds = LineIdArray(input->GetPointData(), lineIdArrayName);
+    if (!gathered.LineIds && NamesAnArray(lineIdArrayName))
+    {
+      vtkErrorWithObjectMacro(self, "No numeric point array named '" << lineIdArrayName
+                                    << "' for the line ids: nothing fitted.");
+      return std::nullopt;
+    }
+  }
+  const vtkIdType otherCells = input->GetNumberOfCells() - input->GetNumberOfLines();
+  if (otherCells > 0 && !gathered.Connected)
+  {
+    vtkWarningWithObjectMacro(
+      self, << otherCells << " non-line cells (vertices, polygons, strips) ignored.");
+  }
+  if (!gathered.Connected)
+  {
+    gathered.Lines = CellLines(input);
+    return gathered;
+  }
+  gathered.Lines = ConnectedLines(input, gathered.LineIds);
+  const vtkIdType onLines = PointsOnLines(gathered.Lines);
+  if (onLines < input->GetNumberOfPoints())
+  {
+    vtkWarningWithObjectMacro(self, << input->GetNumberOfPoints() - onLines
+                                    << " point(s) with a NaN or infinite "
+                                    << gathered.LineIds->GetName()
+                                    << " belong to no line: ignored.");
+  }
+  return gathered;
+}
+
+/// The point array of this name the family reads per point, or null; a
+/// warning when the name names no numeric array.
+vtkDataArray* PointValuesArray(vtkAlgorithm* self, vtkPointData* pointData, const char* name)
+{
+  if (!name)
+  {
+    return nullptr;
+  }
+  vtkDataArray* values = pointData->GetArray(name);
+  if (!values && pointData->GetAbstractArray(name))
+  {
+    vtkWarningWithObjectMacro(self, "The point array '" << name << "' is not numeric: ignored.");
+  }
+  else if (!values)
+  {
+    vtkWarningWithObjectMacro(self, "No point array named '" << name << "' in the input: ignored.");
+  }
+  return values;
+}
+
+/// Fits the lines in parallel (curve, audit, sampling plan); a line that
+/// fails keeps why in its Error. Progress from 0 to 0.8.
+void FitInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines, vtkPoints* inPoints,
+  vtkDataArray* pointValues, const shapesplines::FitOptions& options,
+  const shapesplines::CurveBuilder& build)
+{
+  LineProgress fitting(self, PointsOnLines(lines), 0.0, 0.8);
+  const auto fitRange = [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType k = begin; k < end && !self->GetAbortExecute(); ++k)
+    {
+      LineWork& line = lines[k];
+      if (!line.Error.empty())
+      {
+        continue; // a damaged cell, reported by ReportFits
+      }
+      std::vector<Vec3> points(line.PointIds.size());
+      for (size_t i = 0; i < points.size(); ++i)
+      {
+        inPoints->GetPoint(line.PointIds[i], points[i].data());
+      }
+      std::vector<double> values;
+      for (size_t i = 0; pointValues && i < points.size(); ++i)
+      {
+        values.push_back(pointValues->GetComponent(line.PointIds[i], 0));
+      }
+      shapesplines::FitOptions lineOptions = options;
+      lineOptions.Progress = [&](double fraction) { return fitting.within(line, fraction); };
+      try
+      {
+        line.Fit = shapesplines::fitPolyline(points, lineOptions, build, values);
+      }
+      catch (const std::exception& e)
+      {
+        line.Error = e.what();
+      }
+      fitting.lineDone(line);
+    }
+  };
+  WhilePublishing(
+    fitting, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), fitRange); });
+}
+
+/// The warnings about one fitted line, in the order a user reads them.
+void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
+{
+  const auto& fit = line.Fit;
+  if (!fit.Spline)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << ") has fewer than two distinct points: passed through.");
+  }
+  else if (fit.Data.Points.size() == 2)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << ") has two distinct points: output is a straight segment.");
+  }
+  if (approximates && fit.Spline && fit.interpolates())
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << ") interpolated, not approximated: too few points for an approximation.");
+  }
+  if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << "): the spline's linear system is ill-conditioned"
+                                    << " (condition estimate " << fit.Spline->conditionEstimate()
+                                    << "): its curvature and torsion may be inaccurate. Very uneven"
+                                    << " point spacing causes this; try Centripetal parameterization"
+                                    << " or resample the line.");
+  }
+  if (fit.Spline && fit.Audit.StrayingSpans > 0)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): the curve strays "
+                                    << fit.Audit.PolygonDeviation << " local segment lengths from "
+                                    << (fit.interpolates() ? "its data" : "its reference polygon")
+                                    << " (span " << fit.Audit.DeviationSpan << ", "
+                                    << fit.Audit.StrayingSpans
+                                    << " span(s) beyond 0.5): not shape-preserving. Very uneven "
+                                    << "spacing does this; try Centripetal parameterization or "
+                                    << "the generalized cubic.");
+  }
+  if (fit.Plan.LengthIncreased)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << "): SampleLength too small, sample spacing widened.");
+  }
+}
+
+/// One message a run for the lines whose curves are the best met within the
+/// automatic mode's bounds (no cusp, no runaway curvature).
+void ReportShapeViolations(
+  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& violatingLines)
+{
+  constexpr size_t DescribedLines = 3;
+  std::ostringstream lineText;
+  for (size_t j = 0; j < violatingLines.size() && j < DescribedLines; ++j)
+  {
+    const LineWork& line = lines[violatingLines[j]];
+    lineText << " Line (" << line.Name << "): " << DescribeFailures(line.Fit.Audit) << ".";
+  }
+  if (violatingLines.size() > DescribedLines)
+  {
+    lineText << " And " << violatingLines.size() - DescribedLines << " more line(s).";
+  }
+  vtkWarningWithObjectMacro(self, << violatingLines.size() << " line(s) keep shape violations "
+                                  << "the automatic mode could not remove without a cusp or a "
+                                  << "curvature beyond its bounds; each keeps the best curve found "
+                                  << "(cell array ShapeViolations). Knots and spans count the "
+                                  << "line's distinct points (approximations: the vertices of the "
+                                  << "reference polygon) from 0." << lineText.str());
+}
+
+/**
+ * The messages about the fits, serially (VTK's messages are not
+ * thread-safe): an error for each line that failed, the warnings about each
+ * other line, then one about the noisy lines and one about the violations
+ * left. Returns the lines that go to the output, in input order.
+ */
+std::vector<size_t> ReportFits(
+  vtkAlgorithm* self, const std::vector<LineWork>& lines, bool approximates, bool adjustsShape)
+{
+  std::vector<size_t> kept;
+  int noisyLines = 0;
+  std::vector<size_t> violatingLines;
+  for (size_t k = 0; k < lines.size(); ++k)
+  {
+    const LineWork& line = lines[k];
+    if (!line.Error.empty())
+    {
+      vtkErrorWithObjectMacro(self, "Line (" << line.Name << ") skipped: " << line.Error << ".");
+      continue;
+    }
+    ReportFit(self, line, approximates);
+    noisyLines += line.Fit.LooksNoisy ? 1 : 0;
+    if (adjustsShape && line.Fit.Spline && !line.Fit.Audit.preserving())
+    {
+      violatingLines.push_back(k);
+    }
+    kept.push_back(k);
+  }
+  if (noisyLines > 0)
+  {
+    vtkWarningWithObjectMacro(self, << noisyLines << " line(s) interpolated through points that "
+                                    << "look noisy (a least squares keeps far fewer knots than "
+                                    << "points): their curvature and torsion follow the noise. "
+                                    << "Mode Approximate gives the curve's own.");
+  }
+  if (!violatingLines.empty())
+  {
+    ReportShapeViolations(self, lines, violatingLines);
+  }
+  return kept;
+}
+
+/// Where each kept line's samples start in the output, then their total.
+std::vector<vtkIdType> FirstSamples(
+  const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+{
+  std::vector<vtkIdType> firstSample(1, 0);
+  for (const size_t k : kept)
+  {
+    const LineWork& line = lines[k];
+    const size_t count = line.Fit.Spline ? line.Fit.Plan.size() : line.PointIds.size();
+    firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
+  }
+  return firstSample;
+}
+
+/// The families' shape parameters (the same names on every line of a family;
+/// lines too short for the family's curve have none).
+std::vector<shapesplines::SpanParameter> ShapeParameterNames(
+  const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+{
+  std::vector<shapesplines::SpanParameter> parameterNames;
+  for (const size_t k : kept)
+  {
+    if (lines[k].Fit.Spline && parameterNames.empty())
+    {
+      parameterNames = lines[k].Fit.Spline->spanParameters();
+    }
+  }
+  return parameterNames;
+}
+
+/**
+ * The output's samples: their points, point arrays and line cells, each kept
+ * line's from its first sample on. Lines are written in parallel, each into
+ * its own tuples.
+ */
+struct SampleOutput
+{
+  SampleOutput(vtkPointData* input, const std::vector<LineWork>& lines,
+    const std::vector<size_t>& kept, std::vector<vtkIdType> firstSample,
+    const std::vector<shapesplines::SpanParameter>& parameterNames)
+    : FirstSample(std::move(firstSample))
+    , Size(FirstSample.back())
+    , Carried(input, Size)
+    , Curvature(NewArray("Curvature", 1, Size))
+    , Torsion(NewArray("Torsion", 1, Size))
+    , Tangent(NewArray("Tangent", 3, Size))
+    , Normal(NewArray("Normal", 3, Size))
+    , Binormal(NewArray("Binormal", 3, Size))
+    , Parameter(NewArray("Parameter", 1, Size))
+    , ArcLength(NewArray("ArcLength", 1, Size))
+    , SpanIndex(shapesplines::newArray<vtkIntArray>("SpanIndex", 1, Size))
+  {
+    this->Points->SetDataTypeToDouble();
+    this->Points->SetNumberOfPoints(this->Size);
+    this->Xyz = vtkDoubleArray::SafeDownCast(this->Points->GetData())->GetPointer(0);
+    for (const auto& p : parameterNames)
+    {
+      this->ShapeParameters.push_back(NewArray(p.Name.c_str(), 1, this->Size));
+      this->ShapeParameters.back()->FillValue(0.0);
+    }
+    this->AllocateCells(lines, kept);
+  }
+
+  /// The connectivity of the c-th kept line's cell.
+  vtkIdType* CellOf(vtkIdType c)
+  {
+    return this->Connectivity->GetPointer(this->Offsets->GetValue(c));
+  }
+
+  /// Sets the output's points, lines, point arrays and TorsionColorRange.
+  void AddTo(vtkPolyData* output, bool vmtkArrayNames) const
+  {
+    vtkNew<vtkCellArray> outLines;
+    outLines->SetData(this->Offsets, this->Connectivity);
+    output->SetPoints(this->Points);
+    output->SetLines(outLines);
+    vtkPointData* outPD = output->GetPointData();
+    // Input arrays first: ours replace any of the same name.
+    this->Carried.AddTo(outPD);
+    shapesplines::addArrays(outPD, { this->Curvature, this->Torsion, this->Tangent, this->Normal,
+                                     this->Binormal, this->Parameter, this->ArcLength,
+                                     this->SpanIndex });
+    for (const auto& a : this->ShapeParameters)
+    {
+      outPD->AddArray(a);
+    }
+    outPD->SetActiveScalars("Torsion");
+    output->GetFieldData()->AddArray(TorsionColorRange(this->Torsion));
+    if (vmtkArrayNames)
+    {
+      outPD->AddArray(Renamed(this->Tangent.Get(), "FrenetTangent"));
+      outPD->AddArray(Renamed(this->Normal.Get(), "FrenetNormal"));
+      outPD->AddArray(Renamed(this->Binormal.Get(), "FrenetBinormal"));
+    }
+  }
+
+  std::vector<vtkIdType> FirstSample; ///< of each kept line, then the total
+  vtkIdType Size;
+  PointArrayTransfer Carried;
+  vtkNew<vtkPoints> Points;
+  double* Xyz = nullptr; ///< the points' coordinates
+  vtkSmartPointer<vtkDoubleArray> Curvature, Torsion, Tangent, Normal, Binormal, Parameter,
+    ArcLength;
+  vtkSmartPointer<vtkIntArray> SpanIndex;
+  std::vector<vtkSmartPointer<vtkDoubleArray>> ShapeParameters; ///< 0 where a line has none
+  vtkNew<vtkIdTypeArray> Offsets;
+  vtkNew<vtkIdTypeArray> Connectivity;
+
+private:
+  void AllocateCells(const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+  {
+    // Closed lines repeat their first sample id at the end of their cell.
+    const auto lineCount = static_cast<vtkIdType>(kept.size());
+    this->Offsets->SetNumberOfTuples(lineCount + 1);
+    this->Offsets->SetValue(0, 0);
+    for (vtkIdType c = 0; c < lineCount; ++c)
+    {
+      const auto& fit = lines[kept[c]].Fit;
+      const vtkIdType closing = fit.Spline && fit.Data.Closed ? 1 : 0;
+      this->Offsets->SetValue(c + 1,
+        this->Offsets->GetValue(c) + this->FirstSample[c + 1] - this->FirstSample[c] + closing);
+    }
+    this->Connectivity->SetNumberOfTuples(this->Offsets->GetValue(lineCount));
+  }
+};
+
+/// A line without a curve, passed through unchanged with a zero frame.
+void WritePassedThrough(
+  const LineWork& line, vtkPoints* inPoints, vtkIdType first, vtkIdType* cell, SampleOutput& out)
+{
+  vtkIdType next = first;
+  for (const vtkIdType id : line.PointIds)
+  {
+    inPoints->GetPoint(id, out.Xyz + 3 * next);
+    out.Carried.Interpolate(next, id, id, 0.0);
+    out.Curvature->SetValue(next, 0.0);
+    out.Torsion->SetValue(next, 0.0);
+    out.Parameter->SetValue(next, 0.0);
+    out.ArcLength->SetValue(next, 0.0);
+    for (vtkDoubleArray* frame : { out.Tangent.Get(), out.Normal.Get(), out.Binormal.Get() })
+    {
+      frame->SetTuple3(next, 0.0, 0.0, 0.0);
+    }
+    out.SpanIndex->SetValue(next, 0);
+    *cell++ = next++;
+  }
+}
+
+/// A line's curve, sampled here and written straight into the output; also
+/// its Length, Chord and LargestCurvature. False when the run was aborted.
+bool WriteSampledLine(
+  LineWork& line, vtkIdType first, vtkIdType* cell, SampleOutput& out, LineProgress& progress)
+{
+  const auto& fit = line.Fit;
+  shapesplines::SampledCurve sampled;
+  try
+  {
+    sampled = shapesplines::sampleFit(
+      fit, [&](double fraction) { return progress.within(line, fraction); });
+  }
+  catch (const shapesplines::FitAborted&)
+  {
+    return false;
+  }
+  const auto& samples = sampled.Samples;
+  line.Length = samples.Length;
+  line.Chord =
+    fit.Data.Closed ? 0.0 : (samples.Values.back()[0] - samples.Values.front()[0]).norm();
+  const std::vector<shapesplines::SpanParameter> lineParameters = fit.Spline->spanParameters();
+  const int knotCount = static_cast<int>(fit.Data.Points.size());
+  vtkIdType next = first;
+  for (int s = 0; s < samples.size(); ++s)
+  {
+    const int span = samples.Span[s];
+    const auto [interval, fraction] = DataInterval(fit, samples, s);
+    const vtkIdType from = line.PointIds[fit.Data.SourceIndex[interval]];
+    const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(interval + 1) % knotCount]];
+    out.Carried.Interpolate(next, from, to, fraction);
+    for (size_t p = 0; p < lineParameters.size() && p < out.ShapeParameters.size(); ++p)
+    {
+      out.ShapeParameters[p]->SetValue(next, lineParameters[p].Values[span]);
+    }
+    std::copy_n(samples.Values[s][0].data(), 3, out.Xyz + 3 * next);
+    const auto& frame = sampled.Frames[s];
+    out.Curvature->SetValue(next, frame.Curvature);
+    line.LargestCurvature = std::max(line.LargestCurvature, frame.Curvature);
+    out.Torsion->SetValue(next, frame.Torsion);
+    std::copy_n(frame.Tangent.data(), 3, out.Tangent->GetPointer(3 * next));
+    std::copy_n(frame.Normal.data(), 3, out.Normal->GetPointer(3 * next));
+    std::copy_n(frame.Binormal.data(), 3, out.Binormal->GetPointer(3 * next));
+    out.Parameter->SetValue(next, samples.Parameter[s]);
+    out.ArcLength->SetValue(next, samples.ArcLength[s]);
+    out.SpanIndex->SetValue(next, span);
+    *cell++ = next++;
+  }
+  if (fit.Data.Closed)
+  {
+    *cell = first;
+  }
+  return true;
+}
+
+/// Writes the kept lines into the output in parallel, a line per task.
+/// Progress from 0.8 to 0.95.
+void WriteSamplesInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines,
+  const std::vector<size_t>& kept, vtkPoints* inPoints, SampleOutput& out)
+{
+  vtkIdType keptLinePoints = 0;
+  for (const size_t k : kept)
+  {
+    keptLinePoints += static_cast<vtkIdType>(lines[k].PointIds.size());
+  }
+  LineProgress sampling(self, keptLinePoints, 0.8, 0.95);
+  const auto writeRange = [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end && !self->GetAbortExecute(); ++c)
+    {
+      LineWork& line = lines[kept[c]];
+      if (!line.Fit.Spline)
+      {
+        WritePassedThrough(line, inPoints, out.FirstSample[c], out.CellOf(c), out);
+      }
+      else if (!WriteSampledLine(line, out.FirstSample[c], out.CellOf(c), out, sampling))
+      {
+        break; // the abort flag is set: the output is dropped
+      }
+      sampling.lineDone(line);
+    }
+  };
+  WhilePublishing(
+    sampling, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(kept.size()), writeRange); });
+}
+
+/// A curvature a million times the line's size is a cusp or a kink, not the
+/// shape of the data.
+void ReportCurvatureSpikes(
+  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+{
+  for (const size_t k : kept)
+  {
+    const LineWork& line = lines[k];
+    const double diagonal =
+      line.Fit.Spline ? line.Fit.Scale * BoxDiagonal(line.Fit.Data.Points) : 0.0;
+    if (line.LargestCurvature * diagonal > SuspectCurvature)
+    {
+      vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): curvature up to "
+                                      << line.LargestCurvature << ", "
+                                      << line.LargestCurvature * diagonal
+                                      << " over its bounding box diagonal: a cusp or a kink, not "
+                                      << "the data's shape. Mode Approximate, another family or "
+                                      << "the automatic shape mode avoid it.");
+    }
+  }
+}
+
+/// The output's cell arrays of each kept line (after the input cells' own).
+struct LineArrays
+{
+  LineArrays(vtkIdType lineCount, const std::vector<shapesplines::SpanParameter>& parameterNames,
+    vtkDataArray* lineIds)
+    : Preserving(shapesplines::newArray<vtkUnsignedCharArray>("ShapePreserving", 1, lineCount))
+    , Violations(shapesplines::newArray<vtkIntArray>("ShapeViolations", 1, lineCount))
+    , Length(NewArray("Length", 1, lineCount))
+    , KnotCount(shapesplines::newArray<vtkIntArray>("NumberOfKnots", 1, lineCount))
+    , NoiseLevel(NewArray("NoiseLevel", 1, lineCount))
+    , Deviation(NewArray("PolygonDeviation", 1, lineCount))
+    , Tortuosity(NewArray("Tortuosity", 1, lineCount))
+    , Condition(NewArray("ConditionEstimate", 1, lineCount))
+    , Merged(shapesplines::newArray<vtkIntArray>("MergedPoints", 1, lineCount))
+    , LineIds(lineIds)
+  {
+    for (const auto& p : parameterNames)
+    {
+      const std::string summary = (p.CellSummaryIsMaximum ? "Max" : "Min") + p.Name;
+      this->ShapeParameterSummaries.push_back(NewArray(summary.c_str(), 1, lineCount));
+      this->ShapeParameterSummaries.back()->FillValue(0.0);
+    }
+    // Connected points keep their line ids, in the ids' own type.
+    if (lineIds)
+    {
+      this->LineIdValues = vtk::TakeSmartPointer(lineIds->NewInstance());
+      this->LineIdValues->SetName("LineId");
+      this->LineIdValues->SetNumberOfTuples(lineCount);
+    }
+  }
+
+  void Write(vtkIdType c, const LineWork& line)
+  {
+    const auto& fit = line.Fit;
+    const int count = fit.Spline ? fit.Audit.violations() : 0;
+    this->Preserving->SetValue(c, count == 0 ? 1 : 0);
+    this->Violations->SetValue(c, count);
+    const double total = line.Length;
+    this->Length->SetValue(c, total);
+    this->Tortuosity->SetValue(c, line.Chord > 0 ? total / line.Chord : 0.0);
+    this->Condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
+    this->KnotCount->SetValue(c, fit.Spline ? static_cast<int>(fit.Spline->knots().size()) : 0);
+    this->NoiseLevel->SetValue(c, fit.NoiseLevel);
+    this->Merged->SetValue(c, fit.Data.MergedPoints);
+    if (this->LineIdValues)
+    {
+      this->LineIdValues->SetTuple1(c, this->LineIds->GetComponent(line.PointIds[0], 0));
+    }
+    this->Deviation->SetValue(c, fit.Spline ? fit.Audit.PolygonDeviation : 0.0);
+    const auto lineParameters =
+      fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
+    for (size_t p = 0; p < lineParameters.size() && p < this->ShapeParameterSummaries.size(); ++p)
+    {
+      const auto& values = lineParameters[p].Values;
+      if (!values.empty())
+      {
+        this->ShapeParameterSummaries[p]->SetValue(c, lineParameters[p].CellSummaryIsMaximum
+            ? *std::max_element(values.begin(), values.end())
+            : *std::min_element(values.begin(), values.end()));
+      }
+    }
+  }
+
+  void AddTo(vtkCellData* cellData) const
+  {
+    shapesplines::addArrays(cellData, { this->Preserving, this->Violations, this->Length,
+                                        this->Tortuosity, this->Condition, this->KnotCount,
+                                        this->NoiseLevel, this->Deviation, this->Merged });
+    if (this->LineIdValues)
+    {
+      cellData->AddArray(this->LineIdValues);
+    }
+    for (const auto& a : this->ShapeParameterSummaries)
+    {
+      cellData->AddArray(a);
+    }
+  }
+
+  vtkSmartPointer<vtkUnsignedCharArray> Preserving;
+  vtkSmartPointer<vtkIntArray> Violations;
+  vtkSmartPointer<vtkDoubleArray> Length;
+  vtkSmartPointer<vtkIntArray> KnotCount;
+  vtkSmartPointer<vtkDoubleArray> NoiseLevel, Deviation, Tortuosity, Condition;
+  vtkSmartPointer<vtkIntArray> Merged;
+  vtkDataArray* LineIds;                      ///< the connected points' line ids, or null
+  vtkSmartPointer<vtkDataArray> LineIdValues; ///< LineId, when there are line ids
+  std::vector<vtkSmartPointer<vtkDoubleArray>> ShapeParameterSummaries;
+};
+
+/// Per-line cell data: the input cells' (connected points have none), then ours.
+void WriteCellData(vtkPolyData* input, vtkPolyData* output, const InputLines& gathered,
+  const std::vector<size_t>& kept, const std::vector<shapesplines::SpanParameter>& parameterNames)
+{
+  const auto lineCount = static_cast<vtkIdType>(kept.size());
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  if (!gathered.Connected)
+  {
+    outCD->CopyAllocate(inCD, lineCount);
+  }
+  LineArrays arrays(lineCount, parameterNames, gathered.LineIds);
+  for (vtkIdType c = 0; c < lineCount; ++c)
+  {
+    const LineWork& line = gathered.Lines[kept[c]];
+    if (!gathered.Connected)
+    {
+      outCD->CopyData(inCD, line.CellId, c);
+    }
+    arrays.Write(c, line);
+  }
+  arrays.AddTo(outCD);
+}
 } // namespace
 
 vtkShapeSplineFilter::vtkShapeSplineFilter() = default;
@@ -416,7 +1020,7 @@ int vtkShapeSplineFilter::ApproximationKnotCount(int numberOfKnots)
 const char* vtkShapeSplineFilter::GetPointValuesArrayInUse()
 {
   const char* name = this->GetPointValuesArrayName();
-  return name && *name && std::string(name) != "None" ? name : nullptr;
+  return NamesAnArray(name) ? name : nullptr;
 }
 
 int vtkShapeSplineFilter::RequestData(
@@ -473,51 +1077,52 @@ int vtkShapeSplineFilter::RequestData(
 
 int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
 {
-  // Points without cells, or with vertices only (a table's rows), become lines
-  // in point order when ConnectPoints is on; polygons' points do not.
-  const bool onlyPoints = input->GetNumberOfCells() == input->GetNumberOfVerts();
-  const bool connected = onlyPoints && this->ConnectPoints;
-  if (input->GetNumberOfPoints() == 0 || (input->GetNumberOfLines() == 0 && !connected))
+  // Gather the lines serially; fit them in parallel (curve, audit, sampling plan).
+  std::optional<InputLines> gathered =
+    GatherInputLines(this, input, this->ConnectPoints, this->LineIdArrayName);
+  if (!gathered)
   {
-    vtkWarningMacro("Input has no lines: the output is empty."
-      << (input->GetNumberOfPoints() > 0 && onlyPoints
-             ? " Connect Points makes lines of its points in order."
-             : ""));
+    return 1; // reported: the output is empty
+  }
+  std::vector<LineWork>& lines = gathered->Lines;
+
+  const shapesplines::CurveBuilder build = [this](const shapesplines::FitContext& context) {
+    return this->BuildCurve(context);
+  };
+  vtkDataArray* pointValues =
+    PointValuesArray(this, input->GetPointData(), this->GetPointValuesArrayInUse());
+  FitInParallel(this, lines, input->GetPoints(), pointValues, this->BuildFitOptions(input), build);
+  if (this->GetAbortExecute())
+  {
+    return 1; // an aborted run leaves the output empty
+  }
+  this->UpdateProgress(0.8);
+
+  // Messages and where each line's samples go, serially (VTK's messages are not
+  // thread-safe); then the arrays are written in parallel, a line per task.
+  const std::vector<size_t> kept =
+    ReportFits(this, lines, this->Approximates(), this->AdjustsShape());
+  std::vector<vtkIdType> firstSample = FirstSamples(lines, kept);
+  if (!this->WithinSampleBudget(firstSample.back()))
+  {
     return 1;
   }
-  vtkDataArray* lineIds = nullptr;
-  if (connected)
+  const auto parameterNames = ShapeParameterNames(lines, kept);
+  SampleOutput samples(input->GetPointData(), lines, kept, std::move(firstSample), parameterNames);
+  WriteSamplesInParallel(this, lines, kept, input->GetPoints(), samples);
+  if (this->GetAbortExecute())
   {
-    lineIds = LineIdArray(input->GetPointData(), this->LineIdArrayName);
-    if (!lineIds && this->LineIdArrayName && *this->LineIdArrayName &&
-      std::string(this->LineIdArrayName) != "None")
-    {
-      vtkErrorMacro("No numeric point array named '" << this->LineIdArrayName
-                                                     << "' for the line ids: nothing fitted.");
-      return 1;
-    }
+    return 1; // an aborted run leaves the output empty
   }
-  const vtkIdType otherCells = input->GetNumberOfCells() - input->GetNumberOfLines();
-  if (otherCells > 0 && !connected)
-  {
-    vtkWarningMacro(<< otherCells << " non-line cells (vertices, polygons, strips) ignored.");
-  }
+  this->UpdateProgress(0.95);
+  ReportCurvatureSpikes(this, lines, kept);
+  samples.AddTo(output, this->VMTKArrayNames);
+  WriteCellData(input, output, *gathered, kept, parameterNames);
+  return 1;
+}
 
-  // Gather the lines serially; fit them in parallel (curve, audit, sampling plan).
-  std::vector<LineWork> lines = connected ? ConnectedLines(input, lineIds) : GatherLines(input);
-  if (connected)
-  {
-    vtkIdType onLines = 0;
-    for (const LineWork& line : lines)
-    {
-      onLines += static_cast<vtkIdType>(line.PointIds.size());
-    }
-    if (onLines < input->GetNumberOfPoints())
-    {
-      vtkWarningMacro(<< input->GetNumberOfPoints() - onLines << " point(s) with a NaN or "
-                      << "infinite " << lineIds->GetName() << " belong to no line: ignored.");
-    }
-  }
+shapesplines::FitOptions vtkShapeSplineFilter::BuildFitOptions(vtkPolyData* input) const
+{
   shapesplines::FitOptions options;
   options.Knots = static_cast<shapesplines::Parameterization>(this->Parameterization);
   options.Closed = this->Closed;
@@ -532,439 +1137,24 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
   options.CoordinatePrecision = input->GetPoints()->GetDataType() == VTK_FLOAT
     ? std::numeric_limits<float>::epsilon()
     : std::numeric_limits<double>::epsilon();
-  const shapesplines::CurveBuilder build = [this](const shapesplines::FitContext& context) {
-    return this->BuildCurve(context);
-  };
+  return options;
+}
 
-  vtkPoints* inPoints = input->GetPoints();
-  vtkDataArray* pointValues = nullptr;
-  const char* valuesName = this->GetPointValuesArrayInUse();
-  if (valuesName)
+bool vtkShapeSplineFilter::WithinSampleBudget(vtkIdType samples)
+{
+  if (samples <= MaximumRunSamples)
   {
-    pointValues = input->GetPointData()->GetArray(valuesName);
-    if (!pointValues && input->GetPointData()->GetAbstractArray(valuesName))
-    {
-      vtkWarningMacro("The point array '" << valuesName << "' is not numeric: ignored.");
-    }
-    else if (!pointValues)
-    {
-      vtkWarningMacro("No point array named '" << valuesName << "' in the input: ignored.");
-    }
+    return true;
   }
-  vtkIdType inputLinePoints = 0;
-  for (const LineWork& line : lines)
-  {
-    inputLinePoints += static_cast<vtkIdType>(line.PointIds.size());
-  }
-  LineProgress fitting(this, inputLinePoints, 0.0, 0.8);
-  const auto fitRange = [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType k = begin; k < end && !this->GetAbortExecute(); ++k)
-    {
-      LineWork& line = lines[k];
-      if (!line.Error.empty())
-      {
-        continue; // a damaged cell, reported below
-      }
-      std::vector<Vec3> points(line.PointIds.size());
-      for (size_t i = 0; i < points.size(); ++i)
-      {
-        inPoints->GetPoint(line.PointIds[i], points[i].data());
-      }
-      std::vector<double> values;
-      for (size_t i = 0; pointValues && i < points.size(); ++i)
-      {
-        values.push_back(pointValues->GetComponent(line.PointIds[i], 0));
-      }
-      shapesplines::FitOptions lineOptions = options;
-      lineOptions.Progress = [&](double fraction) { return fitting.within(line, fraction); };
-      try
-      {
-        line.Fit = shapesplines::fitPolyline(points, lineOptions, build, values);
-      }
-      catch (const std::exception& e)
-      {
-        line.Error = e.what();
-      }
-      fitting.lineDone(line);
-    }
-  };
-  WhilePublishing(
-    fitting, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), fitRange); });
-  if (this->GetAbortExecute())
-  {
-    return 1; // an aborted run leaves the output empty
-  }
-  this->UpdateProgress(0.8);
-
-  // Messages and where each line's samples go, serially (VTK's messages are not
-  // thread-safe); then the arrays are written in parallel, a line per task.
-  std::vector<size_t> kept; // lines in the output, in input order
-  int noisyLines = 0;
-  std::vector<size_t> violatingLines;
-  std::vector<vtkIdType> firstSample(1, 0);
-  for (size_t k = 0; k < lines.size(); ++k)
-  {
-    const LineWork& line = lines[k];
-    if (!line.Error.empty())
-    {
-      vtkErrorMacro("Line (" << line.Name << ") skipped: " << line.Error << ".");
-      continue;
-    }
-    const auto& fit = line.Fit;
-    if (!fit.Spline)
-    {
-      vtkWarningMacro("Line (" << line.Name
-                                    << ") has fewer than two distinct points: passed through.");
-    }
-    else if (fit.Data.Points.size() == 2)
-    {
-      vtkWarningMacro("Line (" << line.Name
-                                    << ") has two distinct points: output is a straight segment.");
-    }
-    if (this->Approximates() && fit.Spline && fit.interpolates())
-    {
-      vtkWarningMacro("Line (" << line.Name
-                                    << ") interpolated, not approximated: too few points for an approximation.");
-    }
-    if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
-    {
-      vtkWarningMacro("Line (" << line.Name << "): the spline's linear system is ill-conditioned"
-                                    << " (condition estimate " << fit.Spline->conditionEstimate()
-                                    << "): its curvature and torsion may be inaccurate. Very uneven"
-                                    << " point spacing causes this; try Centripetal parameterization"
-                                    << " or resample the line.");
-    }
-    noisyLines += fit.LooksNoisy ? 1 : 0;
-    if (this->AdjustsShape() && fit.Spline && !fit.Audit.preserving())
-    {
-      violatingLines.push_back(k);
-    }
-    if (fit.Spline && fit.Audit.StrayingSpans > 0)
-    {
-      vtkWarningMacro("Line (" << line.Name << "): the curve strays "
-                                    << fit.Audit.PolygonDeviation << " local segment lengths from "
-                                    << (fit.interpolates() ? "its data" : "its reference polygon")
-                                    << " (span " << fit.Audit.DeviationSpan << ", "
-                                    << fit.Audit.StrayingSpans
-                                    << " span(s) beyond 0.5): not shape-preserving. Very uneven "
-                                    << "spacing does this; try Centripetal parameterization or "
-                                    << "the generalized cubic.");
-    }
-    if (fit.Plan.LengthIncreased)
-    {
-      vtkWarningMacro("Line (" << line.Name
-                                    << "): SampleLength too small, sample spacing widened.");
-    }
-    const size_t count = fit.Spline ? fit.Plan.size() : line.PointIds.size();
-    kept.push_back(k);
-    firstSample.push_back(firstSample.back() + static_cast<vtkIdType>(count));
-  }
-  if (noisyLines > 0)
-  {
-    vtkWarningMacro(<< noisyLines << " line(s) interpolated through points that look noisy (a least "
-                    << "squares keeps far fewer knots than points): their curvature and torsion "
-                    << "follow the noise. Mode Approximate gives the curve's own.");
-  }
-  if (!violatingLines.empty())
-  {
-    // One message a run: the lines' curves are the best met within the
-    // automatic mode's bounds (no cusp, no runaway curvature).
-    constexpr size_t DescribedLines = 3;
-    std::ostringstream lineText;
-    for (size_t j = 0; j < violatingLines.size() && j < DescribedLines; ++j)
-    {
-      const LineWork& line = lines[violatingLines[j]];
-      lineText << " Line (" << line.Name << "): " << DescribeFailures(line.Fit.Audit) << ".";
-    }
-    if (violatingLines.size() > DescribedLines)
-    {
-      lineText << " And " << violatingLines.size() - DescribedLines << " more line(s).";
-    }
-    vtkWarningMacro(<< violatingLines.size() << " line(s) keep shape violations the automatic mode "
-                    << "could not remove without a cusp or a curvature beyond its bounds; each keeps "
-                    << "the best curve found (cell array ShapeViolations). Knots and spans count the "
-                    << "line's distinct points (approximations: the vertices of the reference "
-                    << "polygon) from 0." << lineText.str());
-  }
-  // The families' shape parameters (the same names on every line of a family;
-  // lines too short for the family's curve have none).
-  std::vector<shapesplines::SpanParameter> parameterNames;
-  for (const size_t k : kept)
-  {
-    if (lines[k].Fit.Spline && parameterNames.empty())
-    {
-      parameterNames = lines[k].Fit.Spline->spanParameters();
-    }
-  }
-  const vtkIdType outputSize = firstSample.back();
-  const auto lineCount = static_cast<vtkIdType>(kept.size());
-  if (outputSize > MaximumRunSamples)
-  {
-    vtkErrorMacro("The output would hold " << outputSize << " samples, more than the "
-                  << MaximumRunSamples << " a run may make (about 400 bytes each while it is "
-                  << "made): "
-                  << (this->SamplingMode == ARC_LENGTH
-                         ? "raise SampleLength (now " + std::to_string(this->SampleLength) + ")"
-                         : "lower NumberOfSubdivisions (now " +
-                           std::to_string(this->NumberOfSubdivisions) + ")")
-                  << ", or split the input. The output is empty.");
-    return 1;
-  }
-
-  vtkPointData* inPD = input->GetPointData();
-  vtkPointData* outPD = output->GetPointData();
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  PointArrayTransfer carried(inPD, outputSize);
-
-  vtkNew<vtkPoints> outPoints;
-  outPoints->SetDataTypeToDouble();
-  outPoints->SetNumberOfPoints(outputSize);
-  auto curvature = NewArray("Curvature", 1, outputSize);
-  auto torsion = NewArray("Torsion", 1, outputSize);
-  auto tangent = NewArray("Tangent", 3, outputSize);
-  auto normal = NewArray("Normal", 3, outputSize);
-  auto binormal = NewArray("Binormal", 3, outputSize);
-  auto parameter = NewArray("Parameter", 1, outputSize);
-  auto arcLength = NewArray("ArcLength", 1, outputSize);
-  vtkNew<vtkIntArray> spanIndex;
-  spanIndex->SetName("SpanIndex");
-  spanIndex->SetNumberOfTuples(outputSize);
-  std::vector<vtkSmartPointer<vtkDoubleArray>> shapeParameters;
-  std::vector<vtkSmartPointer<vtkDoubleArray>> shapeParameterSummaries;
-  for (const auto& p : parameterNames)
-  {
-    shapeParameters.push_back(NewArray(p.Name.c_str(), 1, outputSize));
-    shapeParameters.back()->FillValue(0.0);
-    const std::string summary = (p.CellSummaryIsMaximum ? "Max" : "Min") + p.Name;
-    shapeParameterSummaries.push_back(NewArray(summary.c_str(), 1, lineCount));
-    shapeParameterSummaries.back()->FillValue(0.0);
-  }
-  // Closed lines repeat their first sample id at the end of their cell.
-  vtkNew<vtkIdTypeArray> cellOffsets;
-  cellOffsets->SetNumberOfTuples(lineCount + 1);
-  cellOffsets->SetValue(0, 0);
-  for (vtkIdType c = 0; c < lineCount; ++c)
-  {
-    const auto& fit = lines[kept[c]].Fit;
-    const vtkIdType closing = fit.Spline && fit.Data.Closed ? 1 : 0;
-    cellOffsets->SetValue(c + 1,
-      cellOffsets->GetValue(c) + firstSample[c + 1] - firstSample[c] + closing);
-  }
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(cellOffsets->GetValue(lineCount));
-
-  double* xyz = vtkDoubleArray::SafeDownCast(outPoints->GetData())->GetPointer(0);
-  vtkIdType keptLinePoints = 0;
-  for (const size_t k : kept)
-  {
-    keptLinePoints += static_cast<vtkIdType>(lines[k].PointIds.size());
-  }
-  LineProgress sampling(this, keptLinePoints, 0.8, 0.95);
-  const auto writeRange = [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end && !this->GetAbortExecute(); ++c)
-    {
-      LineWork& line = lines[kept[c]];
-      const auto& fit = line.Fit;
-      vtkIdType* cell = connectivity->GetPointer(cellOffsets->GetValue(c));
-      vtkIdType next = firstSample[c];
-      if (!fit.Spline)
-      {
-        // Passed through unchanged, with a zero frame.
-        for (const vtkIdType id : line.PointIds)
-        {
-          inPoints->GetPoint(id, xyz + 3 * next);
-          carried.Interpolate(next, id, id, 0.0);
-          curvature->SetValue(next, 0.0);
-          torsion->SetValue(next, 0.0);
-          parameter->SetValue(next, 0.0);
-          arcLength->SetValue(next, 0.0);
-          for (vtkDoubleArray* frame : { tangent.Get(), normal.Get(), binormal.Get() })
-          {
-            frame->SetTuple3(next, 0.0, 0.0, 0.0);
-          }
-          spanIndex->SetValue(next, 0);
-          *cell++ = next++;
-        }
-        sampling.lineDone(line);
-        continue;
-      }
-      // Sampled here, a line at a time, and written straight into the output.
-      shapesplines::SampledCurve sampled;
-      try
-      {
-        sampled = shapesplines::sampleFit(
-          fit, [&](double fraction) { return sampling.within(line, fraction); });
-      }
-      catch (const shapesplines::FitAborted&)
-      {
-        break; // the abort flag is set: the output is dropped below
-      }
-      const auto& samples = sampled.Samples;
-      line.Length = samples.Length;
-      line.Chord = fit.Data.Closed
-        ? 0.0
-        : (samples.Values.back()[0] - samples.Values.front()[0]).norm();
-      const std::vector<shapesplines::SpanParameter> lineParameters = fit.Spline->spanParameters();
-      const int knotCount = static_cast<int>(fit.Data.Points.size());
-      for (int s = 0; s < samples.size(); ++s)
-      {
-        const int span = samples.Span[s];
-        const auto [interval, fraction] = DataInterval(fit, samples, s);
-        const vtkIdType from = line.PointIds[fit.Data.SourceIndex[interval]];
-        const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(interval + 1) % knotCount]];
-        carried.Interpolate(next, from, to, fraction);
-        for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
-        {
-          shapeParameters[p]->SetValue(next, lineParameters[p].Values[span]);
-        }
-        std::copy_n(samples.Values[s][0].data(), 3, xyz + 3 * next);
-        const auto& frame = sampled.Frames[s];
-        curvature->SetValue(next, frame.Curvature);
-        line.LargestCurvature = std::max(line.LargestCurvature, frame.Curvature);
-        torsion->SetValue(next, frame.Torsion);
-        std::copy_n(frame.Tangent.data(), 3, tangent->GetPointer(3 * next));
-        std::copy_n(frame.Normal.data(), 3, normal->GetPointer(3 * next));
-        std::copy_n(frame.Binormal.data(), 3, binormal->GetPointer(3 * next));
-        parameter->SetValue(next, samples.Parameter[s]);
-        arcLength->SetValue(next, samples.ArcLength[s]);
-        spanIndex->SetValue(next, span);
-        *cell++ = next++;
-      }
-      if (fit.Data.Closed)
-      {
-        *cell = firstSample[c];
-      }
-      sampling.lineDone(line);
-    }
-  };
-  WhilePublishing(sampling, [&] { vtkSMPTools::For(0, lineCount, writeRange); });
-  if (this->GetAbortExecute())
-  {
-    return 1; // an aborted run leaves the output empty
-  }
-  this->UpdateProgress(0.95);
-  for (const size_t k : kept)
-  {
-    // A curvature a million times the line's size is a cusp or a kink, not
-    // the shape of the data.
-    const LineWork& line = lines[k];
-    const double diagonal = line.Fit.Spline ? line.Fit.Scale * BoxDiagonal(line.Fit.Data.Points) : 0.0;
-    if (line.LargestCurvature * diagonal > SuspectCurvature)
-    {
-      vtkWarningMacro("Line (" << line.Name << "): curvature up to " << line.LargestCurvature
-                               << ", " << line.LargestCurvature * diagonal
-                               << " over its bounding box diagonal: a cusp or a kink, not the "
-                               << "data's shape. Mode Approximate, another family or the "
-                               << "automatic shape mode avoid it.");
-    }
-  }
-  vtkNew<vtkCellArray> outLines;
-  outLines->SetData(cellOffsets, connectivity);
-
-  // Per-line cell data: the input cells' (connected points have none).
-  if (!connected)
-  {
-    outCD->CopyAllocate(inCD, lineCount);
-  }
-  vtkNew<vtkUnsignedCharArray> preserving;
-  preserving->SetName("ShapePreserving");
-  preserving->SetNumberOfTuples(lineCount);
-  vtkNew<vtkIntArray> violations;
-  violations->SetName("ShapeViolations");
-  violations->SetNumberOfTuples(lineCount);
-  auto length = NewArray("Length", 1, lineCount);
-  vtkNew<vtkIntArray> knotCount;
-  knotCount->SetName("NumberOfKnots");
-  knotCount->SetNumberOfTuples(lineCount);
-  auto noiseLevel = NewArray("NoiseLevel", 1, lineCount);
-  auto deviation = NewArray("PolygonDeviation", 1, lineCount);
-  auto tortuosity = NewArray("Tortuosity", 1, lineCount);
-  auto condition = NewArray("ConditionEstimate", 1, lineCount);
-  vtkNew<vtkIntArray> merged;
-  merged->SetName("MergedPoints");
-  merged->SetNumberOfTuples(lineCount);
-  // Connected points keep their line ids, in the ids' own type.
-  vtkSmartPointer<vtkDataArray> lineIdValues;
-  if (lineIds)
-  {
-    lineIdValues = vtk::TakeSmartPointer(lineIds->NewInstance());
-    lineIdValues->SetName("LineId");
-    lineIdValues->SetNumberOfTuples(lineCount);
-  }
-  for (vtkIdType c = 0; c < lineCount; ++c)
-  {
-    const LineWork& line = lines[kept[c]];
-    const auto& fit = line.Fit;
-    if (!connected)
-    {
-      outCD->CopyData(inCD, line.CellId, c);
-    }
-    const int count = fit.Spline ? fit.Audit.violations() : 0;
-    preserving->SetValue(c, count == 0 ? 1 : 0);
-    violations->SetValue(c, count);
-    const double total = line.Length;
-    length->SetValue(c, total);
-    tortuosity->SetValue(c, line.Chord > 0 ? total / line.Chord : 0.0);
-    condition->SetValue(c, fit.Spline ? fit.Spline->conditionEstimate() : 1.0);
-    knotCount->SetValue(c, fit.Spline ? static_cast<int>(fit.Spline->knots().size()) : 0);
-    noiseLevel->SetValue(c, fit.NoiseLevel);
-    merged->SetValue(c, fit.Data.MergedPoints);
-    if (lineIdValues)
-    {
-      lineIdValues->SetTuple1(c, lineIds->GetComponent(line.PointIds[0], 0));
-    }
-    deviation->SetValue(c, fit.Spline ? fit.Audit.PolygonDeviation : 0.0);
-    const auto lineParameters =
-      fit.Spline ? fit.Spline->spanParameters() : std::vector<shapesplines::SpanParameter>{};
-    for (size_t p = 0; p < lineParameters.size() && p < shapeParameters.size(); ++p)
-    {
-      const auto& values = lineParameters[p].Values;
-      if (!values.empty())
-      {
-        shapeParameterSummaries[p]->SetValue(c, lineParameters[p].CellSummaryIsMaximum
-            ? *std::max_element(values.begin(), values.end())
-            : *std::min_element(values.begin(), values.end()));
-      }
-    }
-  }
-
-  output->SetPoints(outPoints);
-  output->SetLines(outLines);
-  // Input arrays first: ours replace any of the same name.
-  carried.AddTo(outPD);
-  for (vtkAbstractArray* a : std::initializer_list<vtkAbstractArray*>{ curvature, torsion,
-         tangent, normal, binormal, parameter, arcLength, spanIndex })
-  {
-    outPD->AddArray(a);
-  }
-  for (const auto& a : shapeParameters)
-  {
-    outPD->AddArray(a);
-  }
-  outPD->SetActiveScalars("Torsion");
-  output->GetFieldData()->AddArray(TorsionColorRange(torsion));
-  if (this->VMTKArrayNames)
-  {
-    outPD->AddArray(Renamed(tangent.Get(), "FrenetTangent"));
-    outPD->AddArray(Renamed(normal.Get(), "FrenetNormal"));
-    outPD->AddArray(Renamed(binormal.Get(), "FrenetBinormal"));
-  }
-  for (vtkAbstractArray* a :
-    std::initializer_list<vtkAbstractArray*>{ preserving, violations, length, tortuosity, condition,
-      knotCount, noiseLevel, deviation, merged })
-  {
-    outCD->AddArray(a);
-  }
-  if (lineIdValues)
-  {
-    outCD->AddArray(lineIdValues);
-  }
-  for (const auto& a : shapeParameterSummaries)
-  {
-    outCD->AddArray(a);
-  }
-  return 1;
+  vtkErrorMacro("The output would hold " << samples << " samples, more than the "
+                << MaximumRunSamples << " a run may make (about 400 bytes each while it is "
+                << "made): "
+                << (this->SamplingMode == ARC_LENGTH
+                       ? "raise SampleLength (now " + std::to_string(this->SampleLength) + ")"
+                       : "lower NumberOfSubdivisions (now " +
+                         std::to_string(this->NumberOfSubdivisions) + ")")
+                << ", or split the input. The output is empty.");
+  return false;
 }
 
 void vtkShapeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)

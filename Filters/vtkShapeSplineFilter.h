@@ -76,6 +76,7 @@ namespace shapesplines
 {
 struct BuiltCurve;
 struct FitContext;
+struct FitOptions;
 }
 #endif
 
@@ -304,6 +305,15 @@ protected:
 private:
   /// RequestData's work once its input is checked; std::bad_alloc escapes.
   int FitLines(vtkPolyData* input, vtkPolyData* output);
+
+#ifndef __VTK_WRAP__
+  /// The math core's options from the settings and the input's point type.
+  shapesplines::FitOptions BuildFitOptions(vtkPolyData* input) const;
+#endif
+
+  /// Whether a run may write this many samples (MaximumRunSamples); an error
+  /// says what to change when not.
+  bool WithinSampleBudget(vtkIdType samples);
 
   vtkShapeSplineFilter(const vtkShapeSplineFilter&) = delete;
   void operator=(const vtkShapeSplineFilter&) = delete;
