@@ -381,7 +381,19 @@ void checkDeviation(
   {
     return; // samples elsewhere than the audit's (or capped by the budget)
   }
-  const auto& points = fit.KnotPoints;
+  // Measured in units of the data's largest coordinate (a power of two:
+  // exact), where squared lengths neither overflow nor underflow.
+  double largestCoordinate = 0.0;
+  for (const ss::Vec3& p : fit.KnotPoints)
+  {
+    largestCoordinate = std::max(largestCoordinate, p.cwiseAbs().maxCoeff());
+  }
+  const double unit = largestCoordinate > 0.0 ? std::ldexp(1.0, std::ilogb(largestCoordinate)) : 1.0;
+  std::vector<ss::Vec3> points;
+  for (const ss::Vec3& p : fit.KnotPoints)
+  {
+    points.push_back(p / unit);
+  }
   const int spans = fit.Data.numberOfSpans();
   const auto segment = [&](int j) { return points[(j + 1) % points.size()] - points[j]; };
   double largest = 0.0;
@@ -399,7 +411,7 @@ void checkDeviation(
       }
     }
     const ss::Vec3 ab = segment(j);
-    const ss::Vec3& x = samples.Values[k][0];
+    const ss::Vec3 x = samples.Values[k][0] / unit;
     const double along =
       ab.squaredNorm() > 0.0 ? std::clamp((x - points[j]).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
     const double distance = (x - (points[j] + along * ab)).norm();

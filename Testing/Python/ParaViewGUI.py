@@ -19,7 +19,8 @@ from paraview.simple import *  # noqa: F401,F403
 LoadPlugin(os.environ["SHAPESPLINES_PLUGIN"], remote=False, ns=globals())
 reader = XMLPolyDataReader(registrationName="aorta-centerline.vtp",
                            FileName=[os.path.join(os.environ["SHAPESPLINES_DATA"], "aorta-centerline.vtp")])
-# The centerline repeats a point; Clean merges it (the spline filter would say so in a warning).
+# Clean, as users often do first (the centerline's repeated point would otherwise be
+# merged by the filter and counted in MergedPoints).
 clean = Clean(registrationName="Clean1", Input=reader)
 curve = CubicSpline(registrationName="CubicSpline1", Input=clean)
 view = GetActiveViewOrCreate("RenderView")
@@ -43,21 +44,34 @@ def finish(status, lines):
         ready.write("\n".join([status] + lines) + "\n")
 
 
-def later(step):
+class NotYet(AssertionError):
+    """A range the auto-start has not set yet: checked again a little later."""
+
+
+def later(step, attempts=40):
     """Runs step once the GUI's event loop has run again: the auto-start acts
     there, after the script's or an Apply's updates (a one-shot timer of the
-    render view's Qt interactor)."""
+    render view's Qt interactor). A loaded machine can run the timer before
+    the auto-start's pass: a range not yet as expected is checked again every
+    quarter second, up to 10 s, before it fails."""
     interactor = view.GetInteractor()
 
     def fire(caller, event):
         caller.RemoveObserver(observer)
+        written = len(report)
         try:
             step()
+        except NotYet:
+            if attempts > 1:
+                del report[written:]  # what the attempt that came too early wrote
+                later(step, attempts - 1)
+            else:
+                finish("failed", report + [traceback.format_exc()])
         except Exception:
             finish("failed", report + [traceback.format_exc()])
 
     observer = interactor.AddObserver("TimerEvent", fire)
-    interactor.CreateOneShotTimer(500)
+    interactor.CreateOneShotTimer(250)
 
 
 def apply(**properties):
@@ -83,7 +97,7 @@ def check(what, function, expected):
     found = map_range(function)
     report.append("%s range [%.6g, %.6g], expected [%.6g, %.6g]" % (what, *found, *expected))
     if not all(math.isclose(f, e, rel_tol=1e-9) for f, e in zip(found, expected)):
-        raise AssertionError("%s range [%.6g, %.6g] is not [%.6g, %.6g]" % (what, *found, *expected))
+        raise NotYet("%s range [%.6g, %.6g] is not [%.6g, %.6g]" % (what, *found, *expected))
 
 
 def robust_range():
