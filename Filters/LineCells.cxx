@@ -1,8 +1,10 @@
 #include "LineCells.h"
 
 #include "vtkCellArray.h"
+#include "vtkAlgorithm.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
+#include "vtkInformationVector.h"
 #include "vtkPolyData.h"
 
 #include <algorithm>
@@ -72,5 +74,27 @@ std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* li
     lines[where->second].PointIds.push_back(p);
   }
   return lines;
+}
+vtkPolyData* polyDataInput(
+  vtkAlgorithm* self, vtkInformationVector* input, vtkPolyData* output, int& status)
+{
+  vtkPolyData* polyData = vtkPolyData::GetData(input, 0);
+  vtkDataObject* given = vtkDataObject::GetData(input, 0);
+  status = 1;
+  if (!polyData && given && output)
+  {
+    // A composite input's other blocks still go through.
+    vtkWarningWithObjectMacro(self, "A " << given->GetClassName() << " (a block of a composite "
+                                         << "input?) is not poly data: left out. Extract Surface "
+                                         << "makes poly data of it.");
+    return nullptr;
+  }
+  if (!polyData || !output)
+  {
+    vtkErrorWithObjectMacro(self, "Missing input or output poly data.");
+    status = 0;
+    return nullptr;
+  }
+  return polyData;
 }
 } // namespace shapesplines

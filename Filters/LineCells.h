@@ -11,7 +11,9 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataArray;
+class vtkInformationVector;
 class vtkPolyData;
 
 namespace shapesplines
@@ -27,6 +29,13 @@ struct LineCell
 /// The line cells of polyData, in order; a cell with an id outside
 /// [0, number of points) has no point ids and an Error saying so.
 std::vector<LineCell> lineCells(vtkPolyData* polyData);
+
+/// A RequestData's poly data input (port 0), or null once it has said why: a
+/// block of a composite input that is not poly data is left out with a
+/// warning, status 1 (the other blocks go through); a missing input or output
+/// is an error, status 0.
+vtkPolyData* polyDataInput(
+  vtkAlgorithm* self, vtkInformationVector* input, vtkPolyData* output, int& status);
 
 /// Whether a column or point array of this name holds line ids: line_id,
 /// line, lineid, id, cell, cell_id, track or streamline, in any case.

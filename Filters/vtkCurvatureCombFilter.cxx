@@ -156,20 +156,12 @@ vtkCurvatureCombFilter::~vtkCurvatureCombFilter() = default;
 int vtkCurvatureCombFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
-  if (!input && inputObject && output)
+  int status = 1;
+  vtkPolyData* input = shapesplines::polyDataInput(this, inputVector[0], output, status);
+  if (!input)
   {
-    // A composite input's other blocks still go through.
-    vtkWarningMacro("A " << inputObject->GetClassName() << " (a block of a composite input?) is "
-                         << "not poly data: left out. Extract Surface makes poly data of it.");
-    return 1;
-  }
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output poly data.");
-    return 0;
+    return status;
   }
   if (std::isnan(this->ScaleFactor) || std::isnan(this->RelativeToothLength))
   {

@@ -1026,20 +1026,12 @@ const char* vtkShapeSplineFilter::GetPointValuesArrayInUse()
 int vtkShapeSplineFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkDataObject* inputObject = vtkDataObject::GetData(inputVector[0], 0);
-  if (!input && inputObject && output)
+  int status = 1;
+  vtkPolyData* input = shapesplines::polyDataInput(this, inputVector[0], output, status);
+  if (!input)
   {
-    // A composite input's other blocks still go through.
-    vtkWarningMacro("A " << inputObject->GetClassName() << " (a block of a composite input?) is "
-                         << "not poly data: left out. Extract Surface makes poly data of it.");
-    return 1;
-  }
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output poly data.");
-    return 0;
+    return status;
   }
   auto settings = this->GetNumericSettings();
   settings.insert(settings.end(), { { "DataShapeTolerance", this->DataShapeTolerance },
