@@ -1,5 +1,6 @@
 #include "vtkCurvatureCombFilter.h"
 
+#include "ArrayNames.h"
 #include "LineCells.h"
 #include "OutputArrays.h"
 
@@ -21,6 +22,8 @@
 #include <cmath>
 #include <utility>
 #include <vector>
+
+namespace names = shapesplines::names;
 
 vtkStandardNewMacro(vtkCurvatureCombFilter);
 
@@ -85,8 +88,8 @@ struct Comb
   Comb()
   {
     this->Points->SetDataTypeToDouble();
-    this->Value->SetName("CombValue");
-    this->Part->SetName("CombPart");
+    this->Value->SetName(names::CombValue);
+    this->Part->SetName(names::CombPart);
   }
 };
 
@@ -174,8 +177,8 @@ int vtkCurvatureCombFilter::RequestData(
     return 1;
   }
   const bool torsionComb = this->CombType == TORSION;
-  const char* valueName = torsionComb ? "Torsion" : "Curvature";
-  const char* directionName = torsionComb ? "Binormal" : "Normal";
+  const char* valueName = torsionComb ? names::Torsion : names::Curvature;
+  const char* directionName = torsionComb ? names::Binormal : names::Normal;
   vtkDataArray* values = input->GetPointData()->GetArray(valueName);
   vtkDataArray* directions = input->GetPointData()->GetArray(directionName);
   if (!values || values->GetNumberOfComponents() != 1 || !directions ||
@@ -214,10 +217,10 @@ int vtkCurvatureCombFilter::RequestData(
   output->SetPoints(comb.Points);
   output->SetLines(comb.Cells);
   output->GetPointData()->AddArray(comb.Value);
-  output->GetPointData()->SetActiveScalars("CombValue");
+  output->GetPointData()->SetActiveScalars(names::CombValue);
   output->GetCellData()->AddArray(comb.Part);
   vtkNew<vtkDoubleArray> scaleUsed;
-  scaleUsed->SetName("CombScale");
+  scaleUsed->SetName(names::CombScale);
   scaleUsed->InsertNextValue(scale);
   output->GetFieldData()->AddArray(scaleUsed);
   return 1;

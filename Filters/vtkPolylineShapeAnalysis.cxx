@@ -1,5 +1,6 @@
 #include "vtkPolylineShapeAnalysis.h"
 
+#include "ArrayNames.h"
 #include "LineCells.h"
 #include "OutputArrays.h"
 #include "ShapeAnalysis.h"
@@ -29,6 +30,8 @@
 #include <string>
 #include <vector>
 
+namespace names = shapesplines::names;
+
 vtkStandardNewMacro(vtkPolylineShapeAnalysis);
 
 namespace
@@ -50,8 +53,8 @@ Vec3 TupleOf(vtkDataArray* array, vtkIdType id)
   return v;
 }
 
-constexpr std::array<const char*, 5> CurveArrays = { "SpanIndex", "Tangent", "Binormal", "Curvature",
-  "Torsion" };
+constexpr std::array<const char*, 5> CurveArrays = { names::SpanIndex, names::Tangent,
+  names::Binormal, names::Curvature, names::Torsion };
 
 /// Whether curve has the point arrays the audit reads.
 bool HasCurveArrays(vtkPolyData* curve)
@@ -65,11 +68,11 @@ std::vector<shapesplines::AuditSample> CurveSamples(
   vtkPolyData* curve, const std::vector<vtkIdType>& ids, bool& closed)
 {
   vtkPointData* pd = curve->GetPointData();
-  vtkDataArray* span = pd->GetArray("SpanIndex");
-  vtkDataArray* tangent = pd->GetArray("Tangent");
-  vtkDataArray* binormal = pd->GetArray("Binormal");
-  vtkDataArray* curvature = pd->GetArray("Curvature");
-  vtkDataArray* torsion = pd->GetArray("Torsion");
+  vtkDataArray* span = pd->GetArray(names::SpanIndex);
+  vtkDataArray* tangent = pd->GetArray(names::Tangent);
+  vtkDataArray* binormal = pd->GetArray(names::Binormal);
+  vtkDataArray* curvature = pd->GetArray(names::Curvature);
+  vtkDataArray* torsion = pd->GetArray(names::Torsion);
   std::vector<shapesplines::AuditSample> samples;
   closed = ids.size() > 1 && ids.front() == ids.back();
   const size_t count = closed ? ids.size() - 1 : ids.size();
@@ -91,12 +94,12 @@ std::vector<shapesplines::AuditSample> CurveSamples(
 struct DiscreteShapeArrays
 {
   explicit DiscreteShapeArrays(vtkIdType points)
-    : Curvature(NewZeroArray<vtkDoubleArray>("DiscreteCurvature", 1, points))
-    , Torsion(NewZeroArray<vtkDoubleArray>("DiscreteTorsion", 1, points))
-    , Binormal(NewZeroArray<vtkDoubleArray>("DiscreteBinormal", 3, points))
-    , Collinear(NewZeroArray<vtkUnsignedCharArray>("Collinear", 1, points))
-    , Convex(NewZeroArray<vtkUnsignedCharArray>("Convex", 1, points))
-    , Coplanar(NewZeroArray<vtkUnsignedCharArray>("Coplanar", 1, points))
+    : Curvature(NewZeroArray<vtkDoubleArray>(names::DiscreteCurvature, 1, points))
+    , Torsion(NewZeroArray<vtkDoubleArray>(names::DiscreteTorsion, 1, points))
+    , Binormal(NewZeroArray<vtkDoubleArray>(names::DiscreteBinormal, 3, points))
+    , Collinear(NewZeroArray<vtkUnsignedCharArray>(names::Collinear, 1, points))
+    , Convex(NewZeroArray<vtkUnsignedCharArray>(names::Convex, 1, points))
+    , Coplanar(NewZeroArray<vtkUnsignedCharArray>(names::Coplanar, 1, points))
   {
   }
 
@@ -145,9 +148,9 @@ struct AuditArrays
   static constexpr int Criteria = static_cast<int>(shapesplines::ShapeCriterion::Count);
 
   explicit AuditArrays(vtkIdType points)
-    : Mask(NewZeroArray<vtkIntArray>("ViolationMask", 1, points))
-    , Total(NewZeroArray<vtkIntArray>("ShapeViolations", 1, 0))
-    , Preserving(NewZeroArray<vtkUnsignedCharArray>("ShapePreserving", 1, 0))
+    : Mask(NewZeroArray<vtkIntArray>(names::ViolationMask, 1, points))
+    , Total(NewZeroArray<vtkIntArray>(names::ShapeViolations, 1, 0))
+    , Preserving(NewZeroArray<vtkUnsignedCharArray>(names::ShapePreserving, 1, 0))
   {
     const std::array<const char*, Criteria> countNames = { "CollinearityViolations",
       "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",

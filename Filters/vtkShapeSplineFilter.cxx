@@ -1,5 +1,6 @@
 #include "vtkShapeSplineFilter.h"
 
+#include "ArrayNames.h"
 #include "FitPolyline.h"
 #include "LineCells.h"
 #include "OutputArrays.h"
@@ -36,6 +37,8 @@
 #include <sstream>
 #include <string>
 #include <utility>
+
+namespace names = shapesplines::names;
 
 namespace
 {
@@ -112,7 +115,7 @@ vtkSmartPointer<vtkDoubleArray> TorsionColorRange(vtkDoubleArray* torsion)
   const double* values = torsion->GetPointer(0);
   const double typical = shapesplines::typicalMagnitude(
     std::vector<double>(values, values + torsion->GetNumberOfTuples()));
-  auto range = NewArray("TorsionColorRange", 1, 2);
+  auto range = NewArray(names::TorsionColorRange, 1, 2);
   range->SetValue(0, -typical);
   range->SetValue(1, typical);
   return range;
@@ -663,14 +666,14 @@ struct SampleOutput
     : FirstSample(std::move(firstSample))
     , Size(FirstSample.back())
     , Carried(input, Size)
-    , Curvature(NewArray("Curvature", 1, Size))
-    , Torsion(NewArray("Torsion", 1, Size))
-    , Tangent(NewArray("Tangent", 3, Size))
-    , Normal(NewArray("Normal", 3, Size))
-    , Binormal(NewArray("Binormal", 3, Size))
-    , Parameter(NewArray("Parameter", 1, Size))
-    , ArcLength(NewArray("ArcLength", 1, Size))
-    , SpanIndex(shapesplines::newArray<vtkIntArray>("SpanIndex", 1, Size))
+    , Curvature(NewArray(names::Curvature, 1, Size))
+    , Torsion(NewArray(names::Torsion, 1, Size))
+    , Tangent(NewArray(names::Tangent, 3, Size))
+    , Normal(NewArray(names::Normal, 3, Size))
+    , Binormal(NewArray(names::Binormal, 3, Size))
+    , Parameter(NewArray(names::Parameter, 1, Size))
+    , ArcLength(NewArray(names::ArcLength, 1, Size))
+    , SpanIndex(shapesplines::newArray<vtkIntArray>(names::SpanIndex, 1, Size))
   {
     this->Points->SetDataTypeToDouble();
     this->Points->SetNumberOfPoints(this->Size);
@@ -706,7 +709,7 @@ struct SampleOutput
     {
       outPD->AddArray(a);
     }
-    outPD->SetActiveScalars("Torsion");
+    outPD->SetActiveScalars(names::Torsion);
     output->GetFieldData()->AddArray(TorsionColorRange(this->Torsion));
     if (vmtkArrayNames)
     {
@@ -879,15 +882,15 @@ struct LineArrays
 {
   LineArrays(vtkIdType lineCount, const std::vector<shapesplines::SpanParameter>& parameterNames,
     vtkDataArray* lineIds)
-    : Preserving(shapesplines::newArray<vtkUnsignedCharArray>("ShapePreserving", 1, lineCount))
-    , Violations(shapesplines::newArray<vtkIntArray>("ShapeViolations", 1, lineCount))
-    , Length(NewArray("Length", 1, lineCount))
-    , KnotCount(shapesplines::newArray<vtkIntArray>("NumberOfKnots", 1, lineCount))
-    , NoiseLevel(NewArray("NoiseLevel", 1, lineCount))
-    , Deviation(NewArray("PolygonDeviation", 1, lineCount))
-    , Tortuosity(NewArray("Tortuosity", 1, lineCount))
-    , Condition(NewArray("ConditionEstimate", 1, lineCount))
-    , Merged(shapesplines::newArray<vtkIntArray>("MergedPoints", 1, lineCount))
+    : Preserving(shapesplines::newArray<vtkUnsignedCharArray>(names::ShapePreserving, 1, lineCount))
+    , Violations(shapesplines::newArray<vtkIntArray>(names::ShapeViolations, 1, lineCount))
+    , Length(NewArray(names::Length, 1, lineCount))
+    , KnotCount(shapesplines::newArray<vtkIntArray>(names::NumberOfKnots, 1, lineCount))
+    , NoiseLevel(NewArray(names::NoiseLevel, 1, lineCount))
+    , Deviation(NewArray(names::PolygonDeviation, 1, lineCount))
+    , Tortuosity(NewArray(names::Tortuosity, 1, lineCount))
+    , Condition(NewArray(names::ConditionEstimate, 1, lineCount))
+    , Merged(shapesplines::newArray<vtkIntArray>(names::MergedPoints, 1, lineCount))
     , LineIds(lineIds)
   {
     for (const auto& p : parameterNames)
@@ -900,7 +903,7 @@ struct LineArrays
     if (lineIds)
     {
       this->LineIdValues = vtk::TakeSmartPointer(lineIds->NewInstance());
-      this->LineIdValues->SetName("LineId");
+      this->LineIdValues->SetName(names::LineId);
       this->LineIdValues->SetNumberOfTuples(lineCount);
     }
   }
@@ -1009,7 +1012,7 @@ const char* vtkShapeSplineFilter::GetParameterizationAsString()
 
 const char* vtkShapeSplineFilter::GetSamplingModeAsString()
 {
-  return this->SamplingMode == ARC_LENGTH ? "ArcLength" : "Subdivisions";
+  return this->SamplingMode == ARC_LENGTH ? names::ArcLength : "Subdivisions";
 }
 
 int vtkShapeSplineFilter::ApproximationKnotCount(int numberOfKnots)

@@ -2,6 +2,7 @@
 //   shapesplines fit INPUT -o OUTPUT [options]   fit spline curves to polylines
 //   shapesplines audit INPUT [CURVE] [options]   discrete shape, and a curve's audit
 // Reads .vtp, legacy .vtk and .csv; writes .vtp or .csv. Run with --help.
+#include "ArrayNames.h"
 #include "LineCells.h"
 
 #include "vtkCubicSplineFilter.h"
@@ -50,6 +51,8 @@
 #include <string>
 #include <unistd.h>
 #include <vector>
+
+namespace names = shapesplines::names;
 
 namespace
 {
@@ -574,7 +577,7 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkDoubleArray> lineIds;
-  lineIds->SetName("LineId");
+  lineIds->SetName(names::LineId);
   std::map<double, size_t> lineOfId;
   std::vector<std::vector<vtkIdType>> linePoints; ///< in the order of their first rows
   std::string row;
@@ -868,7 +871,7 @@ std::string CsvField(const std::string& name)
 /// A line's id: its LineId (from the input), else its place among the lines.
 double LineIdOf(vtkPolyData* data, vtkIdType line)
 {
-  vtkDataArray* ids = data->GetCellData()->GetArray("LineId");
+  vtkDataArray* ids = data->GetCellData()->GetArray(names::LineId);
   // Cell ids count the vertices first.
   return ids ? ids->GetComponent(data->GetNumberOfVerts() + line, 0) : static_cast<double>(line);
 }
@@ -1077,8 +1080,8 @@ std::string RangeText(vtkDataArray* array, const vtkIdType* ids, vtkIdType n,
 /// One line per output line: samples, length, curvature and torsion ranges, violations.
 void Summarize(vtkPolyData* curve, std::ostream& summary)
 {
-  vtkDataArray* curvature = curve->GetPointData()->GetArray("Curvature");
-  vtkDataArray* torsion = curve->GetPointData()->GetArray("Torsion");
+  vtkDataArray* curvature = curve->GetPointData()->GetArray(names::Curvature);
+  vtkDataArray* torsion = curve->GetPointData()->GetArray(names::Torsion);
   auto it = vtk::TakeSmartPointer(curve->GetLines()->NewIterator());
   vtkIdType line = 0;
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
@@ -1092,9 +1095,9 @@ void Summarize(vtkPolyData* curve, std::ostream& summary)
       maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
     }
     summary << LineName(curve, line) << ": " << n << " samples, length "
-            << CellValue(curve, "Length", line) << ", max curvature " << maxCurvature
+            << CellValue(curve, names::Length, line) << ", max curvature " << maxCurvature
             << ", torsion " << RangeText(torsion, ids, n) << ", shape violations "
-            << CellValue(curve, "ShapeViolations", line) << " (fit's audit)\n";
+            << CellValue(curve, names::ShapeViolations, line) << " (fit's audit)\n";
   }
 }
 
@@ -1359,7 +1362,8 @@ int Audit(Arguments& args)
   if (args.Positional.size() == 2)
   {
     curve = Read(args.Positional[1]);
-    for (const char* name : { "SpanIndex", "Tangent", "Binormal", "Curvature", "Torsion" })
+    for (const char* name :
+      { names::SpanIndex, names::Tangent, names::Binormal, names::Curvature, names::Torsion })
     {
       if (!curve->GetPointData()->GetArray(name))
       {
@@ -1382,10 +1386,10 @@ int Audit(Arguments& args)
   MessageCounter messages({ analysis });
   analysis->Update();
   vtkPolyData* result = analysis->GetOutput();
-  vtkDataArray* curvature = result->GetPointData()->GetArray("DiscreteCurvature");
-  vtkDataArray* torsion = result->GetPointData()->GetArray("DiscreteTorsion");
-  vtkDataArray* collinear = result->GetPointData()->GetArray("Collinear");
-  vtkDataArray* coplanar = result->GetPointData()->GetArray("Coplanar");
+  vtkDataArray* curvature = result->GetPointData()->GetArray(names::DiscreteCurvature);
+  vtkDataArray* torsion = result->GetPointData()->GetArray(names::DiscreteTorsion);
+  vtkDataArray* collinear = result->GetPointData()->GetArray(names::Collinear);
+  vtkDataArray* coplanar = result->GetPointData()->GetArray(names::Coplanar);
   // The segments at an open line's ends have no discrete torsion: 0 there, and
   // not coplanar; a coplanar segment's 0 is the data's.
   const auto definedTorsion = [&](vtkIdType id) {
@@ -1422,9 +1426,9 @@ int Audit(Arguments& args)
             << maxCurvature << ", discrete torsion " << RangeText(torsion, ids, n, definedTorsion)
             << ", " << collinearCount << " collinear points, " << coplanarCount
             << " coplanar segments";
-    if (curve && CellValue(result, "ShapeViolations", line) >= 0)
+    if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
     {
-      summary << "; curve: " << CellValue(result, "ShapeViolations", line)
+      summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
               << " shape violations in the written samples (collinearity "
               << CellValue(result, "CollinearityViolations", line) << ", convexity "
               << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
@@ -1433,17 +1437,17 @@ int Audit(Arguments& args)
               << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
               << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
       // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
-      if (curve->GetCellData()->GetArray("ShapeViolations"))
+      if (curve->GetCellData()->GetArray(names::ShapeViolations))
       {
-        summary << "; fit's audit: " << CellValue(curve, "ShapeViolations", line);
+        summary << "; fit's audit: " << CellValue(curve, names::ShapeViolations, line);
       }
     }
     else if (curve)
     {
       // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
       // approximation's knots are not the data points (its NoiseLevel is the distance).
-      const bool approximation = CellValue(curve, "NoiseLevel", line) > 0.0;
-      const std::string why = !result->GetCellData()->GetArray("ShapeViolations")
+      const bool approximation = CellValue(curve, names::NoiseLevel, line) > 0.0;
+      const std::string why = !result->GetCellData()->GetArray(names::ShapeViolations)
         ? "INPUT has cells other than lines: no counts per line"
         : !problem.empty() ? problem
         : approximation    ? "it approximates the data: its knots are not the data points"
