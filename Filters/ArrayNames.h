@@ -3,6 +3,8 @@
 #ifndef shapesplines_ArrayNames_h
 #define shapesplines_ArrayNames_h
 
+#include <array>
+
 namespace shapesplines::names
 {
 // Point arrays of every curve.
@@ -38,6 +40,10 @@ constexpr const char* Collinear = "Collinear";
 constexpr const char* Convex = "Convex";
 constexpr const char* Coplanar = "Coplanar";
 constexpr const char* ViolationMask = "ViolationMask";
+/// Violations per criterion, in the order of shapesplines::ShapeCriterion.
+constexpr std::array<const char*, 6> CriterionViolations = { "CollinearityViolations",
+  "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",
+  "TorsionSignAtKnotViolations", "TorsionSignOnSpanViolations" };
 
 // Curvature Comb.
 constexpr const char* CombValue = "CombValue";

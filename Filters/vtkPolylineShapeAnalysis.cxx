@@ -152,12 +152,10 @@ struct AuditArrays
     , Total(NewZeroArray<vtkIntArray>(names::ShapeViolations, 1, 0))
     , Preserving(NewZeroArray<vtkUnsignedCharArray>(names::ShapePreserving, 1, 0))
   {
-    const std::array<const char*, Criteria> countNames = { "CollinearityViolations",
-      "ConvexityAtKnotViolations", "ConvexityOnSpanViolations", "CoplanarityViolations",
-      "TorsionSignAtKnotViolations", "TorsionSignOnSpanViolations" };
+    static_assert(names::CriterionViolations.size() == Criteria, "a count per criterion");
     for (int c = 0; c < Criteria; ++c)
     {
-      this->Counts[c] = NewZeroArray<vtkIntArray>(countNames[c], 1, 0);
+      this->Counts[c] = NewZeroArray<vtkIntArray>(names::CriterionViolations[c], 1, 0);
     }
   }
 

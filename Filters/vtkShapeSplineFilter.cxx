@@ -142,18 +142,6 @@ vtkSMPTools::Config ThreadsFor(int numberOfThreads)
 /// about (a circle through the box has about 2).
 constexpr double SuspectCurvature = 1e6;
 
-double BoxDiagonal(const std::vector<Vec3>& points)
-{
-  Vec3 lowest = points.front();
-  Vec3 highest = points.front();
-  for (const Vec3& p : points)
-  {
-    lowest = lowest.cwiseMin(p);
-    highest = highest.cwiseMax(p);
-  }
-  return (highest - lowest).norm();
-}
-
 /// Lines of the input's points in order (Connect Points), named by their id.
 std::vector<LineWork> ConnectedLines(vtkPolyData* input, vtkDataArray* lineIds)
 {
@@ -864,7 +852,7 @@ void ReportCurvatureSpikes(
   {
     const LineWork& line = lines[k];
     const double diagonal =
-      line.Fit.Spline ? line.Fit.Scale * BoxDiagonal(line.Fit.Data.Points) : 0.0;
+      line.Fit.Spline ? line.Fit.Scale * shapesplines::boundingBoxDiagonal(line.Fit.Data.Points) : 0.0;
     if (line.LargestCurvature * diagonal > SuspectCurvature)
     {
       vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): curvature up to "

@@ -1,5 +1,7 @@
 #include "pqShapeSplinesTorsionColors.h"
 
+#include "ArrayNames.h"
+
 #include "pqApplicationCore.h"
 #include "pqDataRepresentation.h"
 #include "pqServerManagerModel.h"
@@ -32,7 +34,7 @@ bool ColorsByTorsion(pqDataRepresentation* representation)
   vtkSMPropertyHelper colorArray(proxy, "ColorArrayName", /*quiet=*/true);
   const char* name = colorArray.GetInputArrayNameToProcess();
   return colorArray.GetInputArrayAssociation() == vtkDataObject::FIELD_ASSOCIATION_POINTS &&
-    name != nullptr && std::strcmp(name, "Torsion") == 0;
+    name != nullptr && std::strcmp(name, shapesplines::names::Torsion) == 0;
 }
 
 /// m of the input's field data TorsionColorRange (-m, m), if it has one. For
@@ -41,7 +43,7 @@ std::optional<double> RobustTorsion(pqDataRepresentation* representation)
 {
   vtkPVDataInformation* data = representation->getInputDataInformation();
   vtkPVArrayInformation* range =
-    data ? data->GetFieldDataInformation()->GetArrayInformation("TorsionColorRange") : nullptr;
+    data ? data->GetFieldDataInformation()->GetArrayInformation(shapesplines::names::TorsionColorRange) : nullptr;
   if (range == nullptr)
   {
     return std::nullopt;

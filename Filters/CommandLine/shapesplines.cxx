@@ -575,11 +575,7 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
   bool first = true;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkDoubleArray> lineIds;
-  lineIds->SetName(names::LineId);
-  std::map<double, size_t> lineOfId;
-  std::vector<std::vector<vtkIdType>> linePoints; ///< in the order of their first rows
+  vtkNew<vtkDoubleArray> rowLineIds; ///< the line id of each row, when a column holds them
   std::string row;
   std::vector<double> tuple;
   for (int number = 1; std::getline(file, row); ++number)
@@ -645,7 +641,6 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
       }
       array->InsertNextTuple(tuple.data());
     }
-    size_t line = 0;
     if (columns.LineId >= 0)
     {
       const double id = numberAt(columns.LineId);
@@ -654,25 +649,25 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
         throw std::runtime_error(
           where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
       }
-      const auto [found, added] = lineOfId.emplace(id, linePoints.size());
-      if (added)
-      {
-        lineIds->InsertNextValue(id);
-      }
-      line = found->second;
+      rowLineIds->InsertNextValue(id);
     }
-    if (line == linePoints.size())
-    {
-      linePoints.emplace_back();
-    }
-    linePoints[line].push_back(points->InsertNextPoint(xyz));
+    points->InsertNextPoint(xyz);
   }
-  // The rows of a line need not be consecutive (tracks interleaved by time).
-  for (const auto& ids : linePoints)
-  {
-    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  }
+  // The rows of a line need not be consecutive (tracks interleaved by time):
+  // grouped as the filters' Connect Points groups points.
   const vtkIdType rows = points->GetNumberOfPoints();
+  vtkDataArray* idOfRow = columns.LineId >= 0 ? rowLineIds.Get() : nullptr;
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkDoubleArray> lineIds;
+  lineIds->SetName(names::LineId);
+  for (const auto& line : shapesplines::connectedPoints(rows, idOfRow))
+  {
+    lines->InsertNextCell(static_cast<vtkIdType>(line.PointIds.size()), line.PointIds.data());
+    if (idOfRow)
+    {
+      lineIds->InsertNextValue(idOfRow->GetComponent(line.PointIds[0], 0));
+    }
+  }
   // A column taken for line ids by its name or place that gives every row its own
   // line numbers points or times, not lines: nothing could be fitted.
   if (columns.LineIdGuessed && rows > 1 && lines->GetNumberOfCells() == rows)
@@ -1428,14 +1423,15 @@ int Audit(Arguments& args)
             << " coplanar segments";
     if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
     {
+      const auto& criterionCount = names::CriterionViolations;
       summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
               << " shape violations in the written samples (collinearity "
-              << CellValue(result, "CollinearityViolations", line) << ", convexity "
-              << CellValue(result, "ConvexityAtKnotViolations", line) << "+"
-              << CellValue(result, "ConvexityOnSpanViolations", line) << ", coplanarity "
-              << CellValue(result, "CoplanarityViolations", line) << ", torsion sign "
-              << CellValue(result, "TorsionSignAtKnotViolations", line) << "+"
-              << CellValue(result, "TorsionSignOnSpanViolations", line) << ")";
+              << CellValue(result, criterionCount[0], line) << ", convexity "
+              << CellValue(result, criterionCount[1], line) << "+"
+              << CellValue(result, criterionCount[2], line) << ", coplanarity "
+              << CellValue(result, criterionCount[3], line) << ", torsion sign "
+              << CellValue(result, criterionCount[4], line) << "+"
+              << CellValue(result, criterionCount[5], line) << ")";
       // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
       if (curve->GetCellData()->GetArray(names::ShapeViolations))
       {
