@@ -1,9 +1,11 @@
 #include "LineCells.h"
 
 #include "vtkCellArray.h"
+#include "vtkAbstractArray.h"
 #include "vtkAlgorithm.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkInformationVector.h"
 #include "vtkPolyData.h"
 
@@ -96,5 +98,29 @@ vtkPolyData* polyDataInput(
     return nullptr;
   }
   return polyData;
+}
+std::vector<int> misfitArrays(vtkFieldData* data, vtkIdType tuples)
+{
+  std::vector<int> misfits;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    if (data->GetAbstractArray(a)->GetNumberOfTuples() != tuples)
+    {
+      misfits.push_back(a);
+    }
+  }
+  return misfits;
+}
+
+std::string describeArrays(vtkFieldData* data, const std::vector<int>& arrays)
+{
+  std::string text;
+  for (const int a : arrays)
+  {
+    const char* name = data->GetArrayName(a);
+    text += (text.empty() ? "" : ", ") + (name ? std::string(name) : "#" + std::to_string(a)) +
+      " (" + std::to_string(data->GetAbstractArray(a)->GetNumberOfTuples()) + " tuples)";
+  }
+  return text;
 }
 } // namespace shapesplines

@@ -13,6 +13,7 @@
 
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkFieldData;
 class vtkInformationVector;
 class vtkPolyData;
 
@@ -46,6 +47,13 @@ bool isLineIdName(const std::string& name);
 /// points, or one line of every point when lineIds is null. Points whose id
 /// is NaN or infinite belong to no line. CellId is the line's index.
 std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* lineIds);
+
+/// The arrays of data (point or cell data) whose tuple count is not `tuples`,
+/// by index: a damaged file's, which no filter may read tuple by tuple.
+std::vector<int> misfitArrays(vtkFieldData* data, vtkIdType tuples);
+
+/// "X (23 tuples)", "Y (0 tuples)": the misfit arrays for a message.
+std::string describeArrays(vtkFieldData* data, const std::vector<int>& arrays);
 } // namespace shapesplines
 
 #endif

@@ -181,12 +181,14 @@ int vtkCurvatureCombFilter::RequestData(
   const char* directionName = torsionComb ? names::Binormal : names::Normal;
   vtkDataArray* values = input->GetPointData()->GetArray(valueName);
   vtkDataArray* directions = input->GetPointData()->GetArray(directionName);
+  const vtkIdType points = input->GetNumberOfPoints();
   if (!values || values->GetNumberOfComponents() != 1 || !directions ||
-    directions->GetNumberOfComponents() != 3)
+    directions->GetNumberOfComponents() != 3 || values->GetNumberOfTuples() != points ||
+    directions->GetNumberOfTuples() != points)
   {
     vtkErrorMacro("Input needs the point arrays "
       << valueName << " (1 component) and " << directionName
-      << " (3 components), as the ShapeSplines curve filters write them.");
+      << " (3 components), one tuple per point, as the ShapeSplines curve filters write them.");
     return 1;
   }
 

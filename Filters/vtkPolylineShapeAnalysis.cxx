@@ -28,6 +28,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace names = shapesplines::names;
@@ -53,14 +54,18 @@ Vec3 TupleOf(vtkDataArray* array, vtkIdType id)
   return v;
 }
 
-constexpr std::array<const char*, 5> CurveArrays = { names::SpanIndex, names::Tangent,
-  names::Binormal, names::Curvature, names::Torsion };
+/// The point arrays the audit reads and their components.
+constexpr std::array<std::pair<const char*, int>, 5> CurveArrays = { { { names::SpanIndex, 1 },
+  { names::Tangent, 3 }, { names::Binormal, 3 }, { names::Curvature, 1 }, { names::Torsion, 1 } } };
 
-/// Whether curve has the point arrays the audit reads.
+/// Whether curve has the point arrays the audit reads, a tuple per point each.
 bool HasCurveArrays(vtkPolyData* curve)
 {
-  return std::all_of(CurveArrays.begin(), CurveArrays.end(),
-    [&](const char* name) { return curve->GetPointData()->GetArray(name) != nullptr; });
+  return std::all_of(CurveArrays.begin(), CurveArrays.end(), [&](const auto& wanted) {
+    vtkDataArray* array = curve->GetPointData()->GetArray(wanted.first);
+    return array && array->GetNumberOfComponents() == wanted.second &&
+      array->GetNumberOfTuples() == curve->GetNumberOfPoints();
+  });
 }
 
 /// The curve's samples of one line, for the audit (see HasCurveArrays).
@@ -391,6 +396,24 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
 {
   output->ShallowCopy(input);
   const vtkIdType nPoints = input->GetNumberOfPoints();
+  // A damaged file's arrays (not one tuple per point or cell) are not passed on.
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(output->GetPointData()),
+         static_cast<vtkFieldData*>(output->GetCellData()) })
+  {
+    const bool points = data == output->GetPointData();
+    const std::vector<int> misfits =
+      shapesplines::misfitArrays(data, points ? nPoints : input->GetNumberOfCells());
+    if (!misfits.empty())
+    {
+      vtkWarningMacro(<< (points ? "Point" : "Cell") << " arrays without one tuple per "
+                      << (points ? "point" : "cell") << " are left out of the output: "
+                      << shapesplines::describeArrays(data, misfits) << ".");
+    }
+    for (auto a = misfits.rbegin(); a != misfits.rend(); ++a)
+    {
+      data->RemoveArray(*a);
+    }
+  }
   DiscreteShapeArrays discrete(nPoints);
   if (input->GetNumberOfLines() == 0)
   {
@@ -408,9 +431,9 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   const bool curveReadable = audit && HasCurveArrays(curve);
   if (audit && !curveReadable)
   {
-    vtkErrorMacro("The curve input lacks SpanIndex, Tangent, Binormal, Curvature or Torsion: it "
-                  "must be the output of a Shape Splines curve filter. Nothing audited "
-                  "(ShapeViolations -1).");
+    vtkErrorMacro("The curve input lacks SpanIndex, Tangent, Binormal, Curvature or Torsion "
+                  "(one tuple per point, 1, 3, 3, 1 and 1 components): it must be the output of "
+                  "a Shape Splines curve filter. Nothing audited (ShapeViolations -1).");
   }
   AuditArrays audits(nPoints);
 

@@ -174,11 +174,16 @@ std::vector<LineWork> ConnectedLines(vtkPolyData* input, vtkDataArray* lineIds)
 class PointArrayTransfer
 {
 public:
-  PointArrayTransfer(vtkPointData* input, vtkIdType size)
+  /// Arrays without a tuple per input point (misfitArrays) are left out.
+  PointArrayTransfer(vtkPointData* input, vtkIdType inputPoints, vtkIdType size)
   {
     for (int a = 0; a < input->GetNumberOfArrays(); ++a)
     {
       vtkAbstractArray* source = input->GetAbstractArray(a);
+      if (source->GetNumberOfTuples() != inputPoints)
+      {
+        continue;
+      }
       auto target = vtk::TakeSmartPointer(source->NewInstance());
       target->SetName(source->GetName());
       target->SetNumberOfComponents(source->GetNumberOfComponents());
@@ -439,7 +444,8 @@ std::optional<InputLines> GatherInputLines(
 
 /// The point array of this name the family reads per point, or null; a
 /// warning when the name names no numeric array.
-vtkDataArray* PointValuesArray(vtkAlgorithm* self, vtkPointData* pointData, const char* name)
+vtkDataArray* PointValuesArray(
+  vtkAlgorithm* self, vtkPointData* pointData, vtkIdType points, const char* name)
 {
   if (!name)
   {
@@ -454,7 +460,33 @@ vtkDataArray* PointValuesArray(vtkAlgorithm* self, vtkPointData* pointData, cons
   {
     vtkWarningWithObjectMacro(self, "No point array named '" << name << "' in the input: ignored.");
   }
+  else if (values->GetNumberOfTuples() != points)
+  {
+    // Reported with the other misfit arrays (ReportMisfitArrays).
+    return nullptr;
+  }
   return values;
+}
+
+/// Warns of input arrays without a tuple per point (cell): they are not read.
+void ReportMisfitArrays(vtkAlgorithm* self, vtkPolyData* input)
+{
+  vtkPointData* pd = input->GetPointData();
+  vtkCellData* cd = input->GetCellData();
+  const std::vector<int> points = shapesplines::misfitArrays(pd, input->GetNumberOfPoints());
+  const std::vector<int> cells = shapesplines::misfitArrays(cd, input->GetNumberOfCells());
+  if (!points.empty())
+  {
+    vtkWarningWithObjectMacro(self, "Point arrays without one tuple per point ("
+        << input->GetNumberOfPoints() << "), as a damaged file holds, are left out: "
+        << shapesplines::describeArrays(pd, points) << ".");
+  }
+  if (!cells.empty())
+  {
+    vtkWarningWithObjectMacro(self, "Cell arrays without one tuple per cell ("
+        << input->GetNumberOfCells() << ") are left out: "
+        << shapesplines::describeArrays(cd, cells) << ".");
+  }
 }
 
 /// Fits the lines in parallel (curve, audit, sampling plan); a line that
@@ -648,12 +680,12 @@ std::vector<shapesplines::SpanParameter> ShapeParameterNames(
  */
 struct SampleOutput
 {
-  SampleOutput(vtkPointData* input, const std::vector<LineWork>& lines,
+  SampleOutput(vtkPointData* input, vtkIdType inputPoints, const std::vector<LineWork>& lines,
     const std::vector<size_t>& kept, std::vector<vtkIdType> firstSample,
     const std::vector<shapesplines::SpanParameter>& parameterNames)
     : FirstSample(std::move(firstSample))
     , Size(FirstSample.back())
-    , Carried(input, Size)
+    , Carried(input, inputPoints, Size)
     , Curvature(NewArray(names::Curvature, 1, Size))
     , Torsion(NewArray(names::Torsion, 1, Size))
     , Tangent(NewArray(names::Tangent, 3, Size))
@@ -959,7 +991,15 @@ void WriteCellData(vtkPolyData* input, vtkPolyData* output, const InputLines& ga
   const std::vector<size_t>& kept, const std::vector<shapesplines::SpanParameter>& parameterNames)
 {
   const auto lineCount = static_cast<vtkIdType>(kept.size());
-  vtkCellData* inCD = input->GetCellData();
+  // The input's cell arrays but those without a tuple per cell (a damaged
+  // file's, reported by ReportMisfitArrays).
+  vtkNew<vtkCellData> inCD;
+  inCD->ShallowCopy(input->GetCellData());
+  const std::vector<int> misfits = shapesplines::misfitArrays(inCD, input->GetNumberOfCells());
+  for (auto a = misfits.rbegin(); a != misfits.rend(); ++a)
+  {
+    inCD->RemoveArray(*a);
+  }
   vtkCellData* outCD = output->GetCellData();
   if (!gathered.Connected)
   {
@@ -1068,12 +1108,14 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1; // reported: the output is empty
   }
   std::vector<LineWork>& lines = gathered->Lines;
+  ReportMisfitArrays(this, input);
 
   const shapesplines::CurveBuilder build = [this](const shapesplines::FitContext& context) {
     return this->BuildCurve(context);
   };
   vtkDataArray* pointValues =
-    PointValuesArray(this, input->GetPointData(), this->GetPointValuesArrayInUse());
+    PointValuesArray(this, input->GetPointData(), input->GetNumberOfPoints(),
+      this->GetPointValuesArrayInUse());
   FitInParallel(this, lines, input->GetPoints(), pointValues, this->BuildFitOptions(input), build);
   if (this->GetAbortExecute())
   {
@@ -1091,7 +1133,8 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1;
   }
   const auto parameterNames = ShapeParameterNames(lines, kept);
-  SampleOutput samples(input->GetPointData(), lines, kept, std::move(firstSample), parameterNames);
+  SampleOutput samples(input->GetPointData(), input->GetNumberOfPoints(), lines, kept,
+    std::move(firstSample), parameterNames);
   WriteSamplesInParallel(this, lines, kept, input->GetPoints(), samples);
   if (this->GetAbortExecute())
   {

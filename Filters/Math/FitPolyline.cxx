@@ -254,6 +254,11 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   // Extents, not norms: squares of 1e-170 or 1e170 under- or overflow.
   fit.Origin = 0.5 * lo + 0.5 * hi;
   fit.Scale = (0.5 * hi - 0.5 * lo).cwiseAbs().maxCoeff() * 2.0;
+  if (!(fit.Scale >= SmallestExtent))
+  {
+    throw std::invalid_argument("the distinct points span less than 1e-300, where their "
+                                "differences lose every digit");
+  }
   fit.CoordinateNoise = options.CoordinatePrecision *
     std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) / fit.Scale;
   for (Vec3& p : fit.Data.Points)

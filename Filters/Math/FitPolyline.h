@@ -188,12 +188,16 @@ constexpr int CrossValidatedKnots = -1;
 /// its arc length) can leave the double range.
 constexpr double LargestCoordinate = 1e300;
 
+/// Lines whose distinct points span less than this are refused: in the
+/// subnormal range their differences lose every digit.
+constexpr double SmallestExtent = 1e-300;
+
 /**
  * Cleans the points, computes knots, builds the curve (two distinct points
  * give the straight segment whatever the family), audits its shape and plans
  * its sampling. pointValues, one per input point or none, reach the builder
- * as FitContext::PointValues, one per cleaned point. Throws std::invalid_argument for non-finite points and for
- * coordinates beyond LargestCoordinate.
+ * as FitContext::PointValues, one per cleaned point. Throws std::invalid_argument for non-finite points,
+ * coordinates beyond LargestCoordinate and distinct points within SmallestExtent.
  */
 FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& options,
   const CurveBuilder& build, const std::vector<double>& pointValues = {});

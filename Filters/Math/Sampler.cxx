@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace shapesplines
 {
@@ -172,6 +173,10 @@ SamplingPlan planSamples(const Curve& curve, const SamplingOptions& options)
   {
     plan.SpanLengths[j] = spanLength(curve, j);
     total += plan.SpanLengths[j];
+  }
+  if (!std::isfinite(total))
+  {
+    throw std::invalid_argument("the curve's length is not finite: it left the double range");
   }
   double spacing = options.TargetLength;
   const double budget = static_cast<double>(options.MaximumSamples - spans - 1);

@@ -343,6 +343,15 @@ std::vector<BadInput> Table()
         ExpectGoodLinesProcessed(o.Run.Output, 2);
         ExpectMessage(o.Run.Errors, { "cell 1", "point id 1000 out of range", "36 points" });
       } },
+    { "SubnormalExtent",
+      [] {
+        // Distinct points all within 1e-310 of each other: subnormal differences.
+        return Between(GoodLine(1e-311));
+      },
+      [](const Outcome& o) {
+        ExpectGoodLinesProcessed(o.Run.Output, 2);
+        ExpectMessage(o.Run.Errors, { "cell 1", "less than 1e-300" });
+      } },
     { "InfCoordinate",
       [] {
         Polyline line = GoodLine();

@@ -1501,6 +1501,77 @@ TEST(DamagedCells, AnalysisAndCombSkipLinesWithPointIdsOutOfRange)
   EXPECT_GT(comb.Output->GetNumberOfPoints(), 0);
 }
 
+/// A copy of data whose point (cell) array `name` is one tuple short, as a damaged file holds.
+vtkSmartPointer<vtkPolyData> WithShortArray(vtkPolyData* data, const char* name, bool cellArray = false)
+{
+  auto damaged = DeepCopy(data);
+  vtkFieldData* arrays = cellArray ? static_cast<vtkFieldData*>(damaged->GetCellData())
+                                   : static_cast<vtkFieldData*>(damaged->GetPointData());
+  vtkAbstractArray* array = arrays->GetAbstractArray(name);
+  array->SetNumberOfTuples(array->GetNumberOfTuples() - 1);
+  return damaged;
+}
+
+TEST(DamagedArrays, ArraysWithoutATuplePerPointOrCellAreLeftOutWithAWarning)
+{
+  auto data = TwoHelices();
+  const vtkIdType points = data->GetNumberOfPoints();
+  for (const char* name : { "Full", "Short" })
+  {
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(name);
+    values->SetNumberOfTuples(std::string(name) == "Full" ? points : points - 1);
+    values->FillValue(2.0);
+    data->GetPointData()->AddArray(values);
+    vtkNew<vtkDoubleArray> perCell;
+    perCell->SetName((std::string(name) + "Cells").c_str());
+    perCell->SetNumberOfTuples(std::string(name) == "Full" ? 2 : 1);
+    perCell->FillValue(3.0);
+    data->GetCellData()->AddArray(perCell);
+  }
+  // The spline filters: the short arrays are neither carried nor read.
+  const FilterRun curve = RunCubic(data);
+  EXPECT_NE(curve.Output->GetPointData()->GetArray("Full"), nullptr);
+  EXPECT_EQ(curve.Output->GetPointData()->GetArray("Short"), nullptr);
+  EXPECT_NE(curve.Output->GetCellData()->GetArray("FullCells"), nullptr);
+  EXPECT_EQ(curve.Output->GetCellData()->GetArray("ShortCells"), nullptr);
+  EXPECT_EQ(CountMessages(curve.Warnings, { "Point arrays without one tuple per point", "Short (" }), 1)
+    << Joined(curve.Warnings);
+  EXPECT_EQ(CountMessages(curve.Warnings, { "Cell arrays without one tuple per cell", "ShortCells (1 tuples)" }), 1)
+    << Joined(curve.Warnings);
+  EXPECT_EQ(LinesOf(curve.Output).size(), 2u);
+  // A per-point parameter array one tuple short is not read either.
+  vtkNew<vtkGeneralizedCubicSplineFilter> tensioned;
+  tensioned->SetTensionArrayName("Short");
+  tensioned->SetInputData(data);
+  const FilterRun tension = UpdateChecked(data, tensioned, { tensioned });
+  EXPECT_EQ(LinesOf(tension.Output).size(), 2u);
+  EXPECT_GE(CountMessages(tension.Warnings, { "Short (" }), 1) << Joined(tension.Warnings);
+  // The analysis passes its input on without them.
+  vtkNew<vtkPolylineShapeAnalysis> analysis;
+  analysis->SetInputData(data);
+  analysis->SetInputData(1, curve.Output);
+  const FilterRun analysed = UpdateChecked(data, analysis, { analysis });
+  EXPECT_NE(analysed.Output->GetPointData()->GetArray("Full"), nullptr);
+  EXPECT_EQ(analysed.Output->GetPointData()->GetArray("Short"), nullptr);
+  EXPECT_EQ(analysed.Output->GetCellData()->GetArray("ShortCells"), nullptr);
+  EXPECT_GE(CellArray(analysed.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CountMessages(analysed.Warnings, { "left out of the output", "Short (" }), 1)
+    << Joined(analysed.Warnings);
+  // A curve whose Curvature lost a tuple: not audited, and the comb refuses it.
+  const auto damagedCurve = WithShortArray(curve.Output, "Curvature");
+  vtkNew<vtkPolylineShapeAnalysis> audit;
+  audit->SetInputData(data);
+  audit->SetInputData(1, damagedCurve);
+  const FilterRun refused = UpdateChecked(data, audit, { audit });
+  EXPECT_EQ(CountMessages(refused.Errors, { "one tuple per point", "Nothing audited" }), 1)
+    << Joined(refused.Errors);
+  EXPECT_EQ(CellArray(refused.Output, "ShapeViolations")->GetTuple1(0), -1.0);
+  const FilterRun comb = RunComb(damagedCurve, [](vtkCurvatureCombFilter*) {});
+  EXPECT_EQ(CountMessages(comb.Errors, { "one tuple per point" }), 1) << Joined(comb.Errors);
+  EXPECT_EQ(comb.Output->GetNumberOfPoints(), 0);
+}
+
 /// Distance from p to the segment ab.
 double DistanceToSegment(const Point& p, const Point& a, const Point& b)
 {
