@@ -14,11 +14,13 @@
 The work is done by the wrapped VTK filters, not re-implemented here: this is
 the same code ParaView runs. Family options are the filter's Set methods in
 snake case: end_condition="natural" calls SetEndConditionToNatural(),
-degree=7 calls SetDegree(7).
+degree=7 calls SetDegree(7), automatic=False (every family but the cubic)
+calls SetAutomatic(False).
 """
 import math
 import numbers
 import re
+import warnings
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
@@ -39,6 +41,10 @@ _POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tan
 # point_data goes through the filter under these names, so that none of the
 # filter's own arrays (Curvature, Degree...) can replace one of the user's.
 _CARRIED = "fit_curves.point_data:"
+
+# Older names of the automatic switch, when each family named it after its
+# shape parameter; still taken, with a DeprecationWarning.
+_RENAMED = {"automatic_tension": "automatic", "automatic_degrees": "automatic"}
 
 # The filter's settings that are this function's arguments, for its messages.
 _ARGUMENTS = {"NumberOfSubdivisions": "samples", "SampleLength": "arc_length"}
@@ -90,6 +96,18 @@ def _configure(spline, options):
             if setter is None:
                 raise ValueError("%s has no option %s" % (spline.GetClassName(), key))
             setter(value)
+
+
+def _renamed(options):
+    """options with the older names replaced by the current ones."""
+    for old, new in _RENAMED.items():
+        if old in options:
+            if new in options:
+                raise ValueError("%s is the old name of %s: give one of them" % (old, new))
+            warnings.warn("fit_curves: %s is deprecated, use %s" % (old, new), DeprecationWarning,
+                          stacklevel=3)
+            options[new] = options.pop(old)
+    return options
 
 
 def _sampling(spline, samples, arc_length, options):
@@ -211,7 +229,7 @@ def fit_curves(points, family="cubic", samples=None, arc_length=None, closed=Fal
     carried = _point_data(point_data, lines, single)
     spline = getattr(shapesplines, FAMILIES[family])()
     _sampling(spline, samples, arc_length, options)
-    _configure(spline, dict(options, parameterization=parameterization))
+    _configure(spline, dict(_renamed(options), parameterization=parameterization))
     spline.SetClosed(closed)
     errors = []
 

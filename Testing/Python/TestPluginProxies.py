@@ -319,7 +319,7 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "GeneralizedCubicSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                            "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                            "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads", "SpaceKind",
-                                           "AutomaticTension", "Tension", "MaxTension",
+                                           "Automatic", "AutomaticTension", "Tension", "MaxTension",
                                            "TensionArray"],
                 "TensionQuinticSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
@@ -329,7 +329,7 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                          "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads", "Mode", "NumberOfKnots",
                                          "CorrectParameters",
-                                         "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
+                                         "Automatic", "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
                                          "ScaleLambdaWithDegree", "EndCondition", "DegreeArray"],
                 "QQRSpline": ["Input", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
                               "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads",
@@ -772,7 +772,7 @@ for file_name in ("akima.vtp", "rpn15a.vtp", "titanium.vtp"):
           % (cell_array(plain, "ShapeViolations")[0], cell_array(out, "ShapeViolations")[0],
              fmt(tension.min()), fmt(tension.max())))
 spline = LOG.watch(GeneralizedCubicSpline(Input=reader("akima.vtp"), SpaceKind="Trigonometric", Tension=5.0,
-                                          AutomaticTension=0))
+                                          Automatic=0))
 out = run(spline, "GeneralizedCubicSpline(akima, Trigonometric, Tension=5)", ("limited to 0.99 pi",))
 check(abs(point_array(out, "Tension").max() - 0.99 * np.pi) < 1e-12,
       "Trigonometric tension 5 is limited to 0.99 pi, with a warning")
@@ -810,7 +810,7 @@ check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
 
 # =========================================================================== VariableDegreeSpline
 print("== VariableDegreeSpline on Akima's data, the helix and noisy helix points")
-plain = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp"), AutomaticDegrees=0))
+plain = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp"), Automatic=0))
 automatic = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp")))
 p_out = run(plain, "VariableDegreeSpline(akima, degree 5)")
 a_out = run(automatic, "VariableDegreeSpline(akima, automatic)")
@@ -852,6 +852,34 @@ check(point_array(cubic_bspline, "Alpha").min() == 6 and point_array(polygon, "A
       "Alpha %s" % fmt(point_array(cubic_bspline, "Alpha").min()))
 run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Continuity="C2 and FC(2l+3)")),
     "QQRSpline(helix, interpolation, FC asked)", ("using C2",))
+
+# =========================================================================== Automatic, old names
+print("== Automatic on every shape-preserving family; the old names still set it")
+
+
+def akima_violations(proxy):
+    return cell_array(run(proxy, proxy.GetXMLName()), "ShapeViolations")[0]
+
+
+for family, old in ((GeneralizedCubicSpline, "AutomaticTension"), (TensionQuinticSpline, None),
+                    (VariableDegreeSpline, "AutomaticDegrees"), (QQRSpline, None)):
+    automatic = akima_violations(family(Input=reader("akima.vtp")))
+    fixed = akima_violations(family(Input=reader("akima.vtp"), Automatic=0))
+    check(fixed > automatic, "%s: Automatic=0 fixes the shape parameters" % family.__name__,
+          "Akima's violations %d fixed, %d automatic" % (fixed, automatic))
+    if old is None:
+        continue
+    # The old name is a hidden alias of Automatic, empty until a script sets
+    # it: it sets Automatic at creation and later, and never overrides it.
+    proxy = family(Input=reader("akima.vtp"), **{old: 0})
+    states = [akima_violations(proxy)]
+    setattr(proxy, old, 1)
+    states.append(akima_violations(proxy))
+    proxy.Automatic = 0
+    states.append(akima_violations(proxy))
+    check(states == [fixed, automatic, fixed] and proxy.GetProperty(old).SMProperty.GetPanelVisibility() == "never",
+          "%s: the hidden old name %s still sets Automatic" % (family.__name__, old),
+          "violations after %s=0, %s=1, Automatic=0: %s" % (old, old, states))
 
 # =========================================================================== Table To Points
 print("== CSV -> Table To Points -> spline filter (Connect Points)")
