@@ -29,14 +29,15 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import shapesplines
+from shapesplines import names
 
 FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter",
             "quintic": "vtkTensionQuinticSplineFilter", "vdps": "vtkVariableDegreeSplineFilter",
             "qqr": "vtkQQRSplineFilter"}
 
-_POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
-                 "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",
-                 "parameter": "Parameter", "span_index": "SpanIndex"}
+_POINT_ARRAYS = {"curvature": names.Curvature, "torsion": names.Torsion, "tangent": names.Tangent,
+                 "normal": names.Normal, "binormal": names.Binormal, "arc_length": names.ArcLength,
+                 "parameter": names.Parameter, "span_index": names.SpanIndex}
 
 # point_data goes through the filter under these names, so that none of the
 # filter's own arrays (Curvature, Degree...) can replace one of the user's.
@@ -59,8 +60,8 @@ class Curve:
         for attribute, name in _POINT_ARRAYS.items():
             setattr(self, attribute, vtk_to_numpy(output.GetPointData().GetArray(name))[ids])
         cells = output.GetCellData()
-        self.shape_violations = int(cells.GetArray("ShapeViolations").GetValue(cell))
-        self.length = float(cells.GetArray("Length").GetValue(cell))
+        self.shape_violations = int(cells.GetArray(names.ShapeViolations).GetValue(cell))
+        self.length = float(cells.GetArray(names.Length).GetValue(cell))
         self.cell_arrays = {cells.GetArrayName(a): cells.GetArray(a).GetTuple(cell)
                             for a in range(cells.GetNumberOfArrays())}
         self.point_arrays = {}

@@ -10,6 +10,7 @@ import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import shapesplines
+from shapesplines import names
 from shapesplines.arrays import fit_curves
 
 failures = []
@@ -50,7 +51,7 @@ natural = fit_curves([points, points[::2] + 1.0], samples=3, end_condition="natu
 from shapesplines.arrays import _polydata  # the same input the helper builds
 spline.SetInputData(_polydata([points, points[::2] + 1.0]))
 spline.Update()
-direct = vtk_to_numpy(spline.GetOutput().GetPointData().GetArray("Torsion"))
+direct = vtk_to_numpy(spline.GetOutput().GetPointData().GetArray(names.Torsion))
 check(len(natural) == 2 and np.array_equal(np.concatenate([c.torsion for c in natural]), direct),
       "a list of lines: the filter's own torsion, with options (end_condition='natural')")
 
@@ -178,7 +179,7 @@ labels = np.arange(len(points)) // 10
 flags = np.arange(len(points)) % 3 == 0
 pair = np.column_stack([radius, -radius]).astype(np.float32)
 carried = fit_curves(points, samples=5, point_data={"radius": radius, "label": labels, "flag": flags,
-                                                    "pair": pair, "Curvature": np.ones(len(points))})
+                                                    "pair": pair, names.Curvature: np.ones(len(points))})
 # The samples' positions in data point units (5 per span: none exactly halfway,
 # where rounding decides which point is the nearer).
 where = np.arange(len(carried.points)) / 5.0
@@ -192,7 +193,7 @@ check(carried.point_data["label"].dtype == labels.dtype and np.array_equal(carri
 check(carried.point_data["pair"].shape == (len(carried.points), 2) and carried.point_data["pair"].dtype == np.float32
       and np.allclose(carried.point_data["pair"][:, 1], -carried.point_data["radius"], atol=1e-6),
       "point_data (n, 2) float32: (m, 2) float32")
-check(np.all(carried.point_data["Curvature"] == 1) and abs(carried.curvature[len(where) // 2] - 0.4) < 2e-3
+check(np.all(carried.point_data[names.Curvature] == 1) and abs(carried.curvature[len(where) // 2] - 0.4) < 2e-3
       and sorted(carried.point_arrays) == sorted(fit_curves(points, samples=5).point_arrays),
       "point_data named like a filter array (Curvature) neither replaces it nor joins point_arrays")
 # An approximation's samples lie between data points its own knots do not
