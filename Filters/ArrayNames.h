@@ -1,5 +1,7 @@
 // The names of the arrays the ShapeSplines filters write, spelled once for the
-// filters and the command line (Python code and the tests read the same strings).
+// filters and the command line. Python reads the same strings from
+// shapesplines.names, which Filters/Python/ArrayNames.cmake generates from this
+// file: declare each name in one of the two forms used below.
 #ifndef shapesplines_ArrayNames_h
 #define shapesplines_ArrayNames_h
 

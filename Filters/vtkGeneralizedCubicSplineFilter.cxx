@@ -36,7 +36,7 @@ int vtkGeneralizedCubicSplineFilter::RequestData(
   const auto kind = static_cast<shapesplines::SpaceKind>(this->SpaceKind);
   if (kind == shapesplines::SpaceKind::Trigonometric &&
     (this->Tension > shapesplines::largestTension(kind, this->Tension) ||
-      (this->AutomaticTension &&
+      (this->Automatic &&
         this->MaxTension > shapesplines::largestTension(kind, this->MaxTension))))
   {
     vtkWarningMacro("Trigonometric tension is limited to 0.99 pi (3.11).");
@@ -45,7 +45,7 @@ int vtkGeneralizedCubicSplineFilter::RequestData(
   {
     vtkWarningMacro("VariableDegree: Tension is the degree, at least 3; using 3.");
   }
-  if (this->AutomaticTension && this->MaxTension < this->Tension)
+  if (this->Automatic && this->MaxTension < this->Tension)
   {
     vtkWarningMacro("MaxTension " << this->MaxTension << " is below Tension " << this->Tension
                                   << ": the automatic mode cannot raise the tension.");
@@ -63,7 +63,7 @@ shapesplines::BuiltCurve vtkGeneralizedCubicSplineFilter::BuildCurve(
 {
   shapesplines::GeneralizedCubicOptions options;
   options.Kind = static_cast<shapesplines::SpaceKind>(this->SpaceKind);
-  options.Automatic = this->AutomaticTension;
+  options.Automatic = this->Automatic;
   options.Tension = this->Tension;
   options.MaxTension = std::max(this->MaxTension, this->Tension);
   return shapesplines::generalizedCubicBuilder(options)(context);
@@ -73,7 +73,7 @@ void vtkGeneralizedCubicSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SpaceKind: " << this->GetSpaceKindAsString() << "\n";
-  os << indent << "AutomaticTension: " << (this->AutomaticTension ? "On" : "Off") << "\n";
+  os << indent << "Automatic: " << (this->Automatic ? "On" : "Off") << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaxTension: " << this->MaxTension << "\n";
   os << indent << "TensionArrayName: "

@@ -13,7 +13,7 @@
  * tension grows. The spline is C2 everywhere, interpolates every point,
  * has natural ends (closed lines are periodic), and is solved in O(n).
  *
- * With AutomaticTension on (default) the tension starts at Tension and is
+ * With Automatic on (default) the tension starts at Tension and is
  * raised, span by span, only where the shape audit (Costantini & Manni (VDPS), Definition 1)
  * fails, until no criterion fails or MaxTension is reached (within the
  * bounds of every automatic mode, see vtkShapeSplineFilter): collinear data
@@ -30,6 +30,7 @@
 #define vtkGeneralizedCubicSplineFilter_h
 
 #include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkDeprecation.h"           // for VTK_DEPRECATION
 #include "vtkShapeSplineFilter.h"
 
 class SHAPESPLINESFILTERS_EXPORT vtkGeneralizedCubicSplineFilter : public vtkShapeSplineFilter
@@ -66,9 +67,25 @@ public:
    * Raise the tension only on spans where the shape audit fails (default
    * on); off, every span gets Tension.
    */
-  vtkSetMacro(AutomaticTension, bool);
-  vtkGetMacro(AutomaticTension, bool);
-  vtkBooleanMacro(AutomaticTension, bool);
+  vtkSetMacro(Automatic, bool);
+  vtkGetMacro(Automatic, bool);
+  vtkBooleanMacro(Automatic, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Deprecated: the old name of Automatic (each family named its switch after
+   * its parameter until they shared one); forwards to it, so that older code
+   * and pvpython scripts keep working.
+   */
+  VTK_DEPRECATION("AutomaticTension is deprecated: use Automatic")
+  void SetAutomaticTension(bool value) { this->SetAutomatic(value); }
+  VTK_DEPRECATION("AutomaticTension is deprecated: use Automatic")
+  bool GetAutomaticTension() { return this->GetAutomatic(); }
+  VTK_DEPRECATION("AutomaticTension is deprecated: use Automatic")
+  void AutomaticTensionOn() { this->AutomaticOn(); }
+  VTK_DEPRECATION("AutomaticTension is deprecated: use Automatic")
+  void AutomaticTensionOff() { this->AutomaticOff(); }
   ///@}
 
   ///@{
@@ -115,10 +132,10 @@ protected:
     return { { "Tension", this->Tension }, { "MaxTension", this->MaxTension } };
   }
   const char* GetPointValuesArrayName() override;
-  bool AdjustsShape() const override { return this->AutomaticTension; }
+  bool AdjustsShape() const override { return this->Automatic; }
 
   int SpaceKind = EXPONENTIAL;
-  bool AutomaticTension = true;
+  bool Automatic = true;
   double Tension = 0.0;
   double MaxTension = 1000.0;
   char* TensionArrayName = nullptr;

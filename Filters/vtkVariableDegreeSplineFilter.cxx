@@ -29,7 +29,7 @@ const char* vtkVariableDegreeSplineFilter::GetModeAsString()
 int vtkVariableDegreeSplineFilter::RequestData(
   vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* output)
 {
-  if (this->AutomaticDegrees && this->MaxDegree < this->Degree)
+  if (this->Automatic && this->MaxDegree < this->Degree)
   {
     vtkWarningMacro("MaxDegree " << this->MaxDegree << " is below Degree " << this->Degree
                                  << ": the automatic mode cannot raise the degrees.");
@@ -53,7 +53,7 @@ shapesplines::BuiltCurve vtkVariableDegreeSplineFilter::BuildCurve(
   shapesplines::VariableDegreeOptions options;
   options.Mode = static_cast<shapesplines::VariableDegreeMode>(this->Mode);
   options.Ends = static_cast<shapesplines::VariableDegreeEnds>(this->EndCondition);
-  options.Automatic = this->AutomaticDegrees;
+  options.Automatic = this->Automatic;
   options.Degree = this->Degree;
   options.MaxDegree = this->MaxDegree;
   options.Lambda = this->Lambda;
@@ -68,7 +68,7 @@ void vtkVariableDegreeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << this->GetModeAsString() << "\n";
   os << indent << "NumberOfKnots: " << this->NumberOfKnots << "\n";
-  os << indent << "AutomaticDegrees: " << (this->AutomaticDegrees ? "On" : "Off") << "\n";
+  os << indent << "Automatic: " << (this->Automatic ? "On" : "Off") << "\n";
   os << indent << "Degree: " << this->Degree << "\n";
   os << indent << "MaxDegree: " << this->MaxDegree << "\n";
   os << indent << "Lambda: " << this->Lambda << "\n";

@@ -13,7 +13,7 @@
  * polygon. Systems are banded (periodic for closed lines): O(n).
  *
  * Mode INTERPOLATE (default) passes through every point. With
- * AutomaticDegrees on (default) the degrees start at Degree and are doubled
+ * Automatic on (default) the degrees start at Degree and are doubled
  * only at the knots of spans where the shape audit (Costantini & Manni (VDPS), Definition 1)
  * fails, until none fails or MaxDegree is reached, within the bounds of
  * every automatic mode (see vtkShapeSplineFilter). The APPROXIMATE modes
@@ -36,6 +36,7 @@
 #define vtkVariableDegreeSplineFilter_h
 
 #include "ShapeSplinesFiltersModule.h" // for export macro
+#include "vtkDeprecation.h"           // for VTK_DEPRECATION
 #include "vtkShapeSplineFilter.h"
 
 class SHAPESPLINESFILTERS_EXPORT vtkVariableDegreeSplineFilter : public vtkShapeSplineFilter
@@ -87,9 +88,25 @@ public:
    * Raise degrees only at knots of spans where the shape audit fails
    * (default on); off, every knot gets Degree.
    */
-  vtkSetMacro(AutomaticDegrees, bool);
-  vtkGetMacro(AutomaticDegrees, bool);
-  vtkBooleanMacro(AutomaticDegrees, bool);
+  vtkSetMacro(Automatic, bool);
+  vtkGetMacro(Automatic, bool);
+  vtkBooleanMacro(Automatic, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Deprecated: the old name of Automatic (each family named its switch after
+   * its parameter until they shared one); forwards to it, so that older code
+   * and pvpython scripts keep working.
+   */
+  VTK_DEPRECATION("AutomaticDegrees is deprecated: use Automatic")
+  void SetAutomaticDegrees(bool value) { this->SetAutomatic(value); }
+  VTK_DEPRECATION("AutomaticDegrees is deprecated: use Automatic")
+  bool GetAutomaticDegrees() { return this->GetAutomatic(); }
+  VTK_DEPRECATION("AutomaticDegrees is deprecated: use Automatic")
+  void AutomaticDegreesOn() { this->AutomaticOn(); }
+  VTK_DEPRECATION("AutomaticDegrees is deprecated: use Automatic")
+  void AutomaticDegreesOff() { this->AutomaticOff(); }
   ///@}
 
   ///@{
@@ -151,7 +168,7 @@ protected:
   vtkVariableDegreeSplineFilter();
   ~vtkVariableDegreeSplineFilter() override;
   bool Approximates() const override { return this->Mode != INTERPOLATE; }
-  bool AdjustsShape() const override { return this->AutomaticDegrees; }
+  bool AdjustsShape() const override { return this->Automatic; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
@@ -166,7 +183,7 @@ protected:
 
   int Mode = INTERPOLATE;
   int NumberOfKnots = 0;
-  bool AutomaticDegrees = true;
+  bool Automatic = true;
   double Degree = 5.0;
   double MaxDegree = 1000.0;
   double Lambda = 1.0;

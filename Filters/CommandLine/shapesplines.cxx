@@ -122,8 +122,8 @@ Options of fit:
   --tension T            gencubic: starting tension (fixed with --fixed);
                          the degree for variable-degree (default 0)
   --max-tension T        gencubic: cap of the automatic tension (default 1000)
-  --fixed                gencubic, quintic, vdps, qqr: no automatic tension,
-                         degrees or exponents
+  --fixed                gencubic, quintic, vdps, qqr: Automatic off (fixed
+                         tension, gamma, degrees or exponents)
   --continuity C         quintic: c4 (default) or c3
   --mode M               quintic, qqr: interpolate (default) or approximate;
                          vdps: interpolate (default), approximate (the local
@@ -1161,7 +1161,7 @@ std::map<std::string, FamilyFactory> Families()
          throw UsageError("--kind must be polynomial, exponential, trigonometric or variable-degree");
        }
        filter->SetSpaceKind(kinds.at(kind));
-       filter->SetAutomaticTension(!args.Flag("fixed"));
+       filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
        filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
@@ -1210,7 +1210,7 @@ std::map<std::string, FamilyFactory> Families()
        filter->SetEndCondition(ends == "clamped" ? vtkVariableDegreeSplineFilter::CLAMPED
                                                  : vtkVariableDegreeSplineFilter::NATURAL);
        filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
-       filter->SetAutomaticDegrees(!args.Flag("fixed"));
+       filter->SetAutomatic(!args.Flag("fixed"));
        filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
        filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
        filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));

@@ -14,11 +14,13 @@
 The work is done by the wrapped VTK filters, not re-implemented here: this is
 the same code ParaView runs. Family options are the filter's Set methods in
 snake case: end_condition="natural" calls SetEndConditionToNatural(),
-degree=7 calls SetDegree(7).
+degree=7 calls SetDegree(7), automatic=False (every family but the cubic)
+calls SetAutomatic(False).
 """
 import math
 import numbers
 import re
+import warnings
 
 import numpy as np
 from vtkmodules.util.misc import calldata_type
@@ -27,18 +29,23 @@ from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
 import shapesplines
+from shapesplines import names
 
 FAMILIES = {"cubic": "vtkCubicSplineFilter", "gencubic": "vtkGeneralizedCubicSplineFilter",
             "quintic": "vtkTensionQuinticSplineFilter", "vdps": "vtkVariableDegreeSplineFilter",
             "qqr": "vtkQQRSplineFilter"}
 
-_POINT_ARRAYS = {"curvature": "Curvature", "torsion": "Torsion", "tangent": "Tangent",
-                 "normal": "Normal", "binormal": "Binormal", "arc_length": "ArcLength",
-                 "parameter": "Parameter", "span_index": "SpanIndex"}
+_POINT_ARRAYS = {"curvature": names.Curvature, "torsion": names.Torsion, "tangent": names.Tangent,
+                 "normal": names.Normal, "binormal": names.Binormal, "arc_length": names.ArcLength,
+                 "parameter": names.Parameter, "span_index": names.SpanIndex}
 
 # point_data goes through the filter under these names, so that none of the
 # filter's own arrays (Curvature, Degree...) can replace one of the user's.
 _CARRIED = "fit_curves.point_data:"
+
+# Older names of the automatic switch, when each family named it after its
+# shape parameter; still taken, with a DeprecationWarning.
+_RENAMED = {"automatic_tension": "automatic", "automatic_degrees": "automatic"}
 
 # The filter's settings that are this function's arguments, for its messages.
 _ARGUMENTS = {"NumberOfSubdivisions": "samples", "SampleLength": "arc_length"}
@@ -53,8 +60,8 @@ class Curve:
         for attribute, name in _POINT_ARRAYS.items():
             setattr(self, attribute, vtk_to_numpy(output.GetPointData().GetArray(name))[ids])
         cells = output.GetCellData()
-        self.shape_violations = int(cells.GetArray("ShapeViolations").GetValue(cell))
-        self.length = float(cells.GetArray("Length").GetValue(cell))
+        self.shape_violations = int(cells.GetArray(names.ShapeViolations).GetValue(cell))
+        self.length = float(cells.GetArray(names.Length).GetValue(cell))
         self.cell_arrays = {cells.GetArrayName(a): cells.GetArray(a).GetTuple(cell)
                             for a in range(cells.GetNumberOfArrays())}
         self.point_arrays = {}
@@ -90,6 +97,18 @@ def _configure(spline, options):
             if setter is None:
                 raise ValueError("%s has no option %s" % (spline.GetClassName(), key))
             setter(value)
+
+
+def _renamed(options):
+    """options with the older names replaced by the current ones."""
+    for old, new in _RENAMED.items():
+        if old in options:
+            if new in options:
+                raise ValueError("%s is the old name of %s: give one of them" % (old, new))
+            warnings.warn("fit_curves: %s is deprecated, use %s" % (old, new), DeprecationWarning,
+                          stacklevel=3)
+            options[new] = options.pop(old)
+    return options
 
 
 def _sampling(spline, samples, arc_length, options):
@@ -211,7 +230,7 @@ def fit_curves(points, family="cubic", samples=None, arc_length=None, closed=Fal
     carried = _point_data(point_data, lines, single)
     spline = getattr(shapesplines, FAMILIES[family])()
     _sampling(spline, samples, arc_length, options)
-    _configure(spline, dict(options, parameterization=parameterization))
+    _configure(spline, dict(_renamed(options), parameterization=parameterization))
     spline.SetClosed(closed)
     errors = []
 

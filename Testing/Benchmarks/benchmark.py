@@ -29,8 +29,8 @@ from vtkmodules.vtkFiltersGeneral import vtkSplineFilter
 SUBDIVISIONS = 10
 # Each family's proxy and the property that switches its automatic shape mode
 # (on by default) off.
-FAMILIES = (("cubic", "CubicSpline", None), ("gencubic", "GeneralizedCubicSpline", "AutomaticTension"),
-            ("quintic", "TensionQuinticSpline", "Automatic"), ("vdps", "VariableDegreeSpline", "AutomaticDegrees"),
+FAMILIES = (("cubic", "CubicSpline", None), ("gencubic", "GeneralizedCubicSpline", "Automatic"),
+            ("quintic", "TensionQuinticSpline", "Automatic"), ("vdps", "VariableDegreeSpline", "Automatic"),
             ("qqr", "QQRSpline", "Automatic"))
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -232,7 +232,7 @@ def accuracy(turns=6, seed=2):
                 fits = [filter_geometry("CubicSpline", xyz),
                         filter_geometry("VariableDegreeSpline", xyz),
                         filter_geometry("VariableDegreeSpline", xyz, Mode="Approximate Local", NumberOfKnots=0,
-                                        AutomaticDegrees=0, Parameterization=UNIFORM),
+                                        Automatic=0, Parameterization=UNIFORM),
                         filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=0,
                                         Automatic=0, Parameterization=UNIFORM),
                         filter_geometry("TensionQuinticSpline", xyz, Mode="Approximate", NumberOfKnots=0,

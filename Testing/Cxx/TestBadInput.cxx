@@ -51,7 +51,7 @@ std::vector<SplineFilter> Filters()
     { "VariableDegreeClampedFixed", [] {
        auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
        filter->SetEndCondition(vtkVariableDegreeSplineFilter::CLAMPED);
-       filter->AutomaticDegreesOff();
+       filter->AutomaticOff();
        filter->SetDegree(12.0);
        return vtkSmartPointer<vtkShapeSplineFilter>(filter);
      } },

@@ -1937,3 +1937,74 @@ TEST(CompositeInput, ABlockThatIsNotPolyDataIsNamedAndTheOthersGoThrough)
   ASSERT_EQ(combs.size(), 2u);
   EXPECT_GT(combs[0]->GetNumberOfLines(), 1);
 }
+
+// ===========================================================================
+// One name for the automatic shape mode on every shape-preserving family.
+
+namespace
+{
+template <typename Filter>
+void ExpectAutomaticSwitch()
+{
+  vtkNew<Filter> filter;
+  EXPECT_TRUE(filter->GetAutomatic()) << filter->GetClassName();
+  filter->AutomaticOff();
+  EXPECT_FALSE(filter->GetAutomatic()) << filter->GetClassName();
+  filter->SetAutomatic(true);
+  EXPECT_TRUE(filter->GetAutomatic()) << filter->GetClassName();
+}
+
+// Fixed parameters break Akima's data somewhere, the automatic mode less.
+double AkimaViolations(vtkShapeSplineFilter* filter)
+{
+  filter->SetInputData(PolylinesData({ AkimaPoints() }));
+  filter->Update();
+  return CellArray(filter->GetOutput(), "ShapeViolations")->GetTuple1(0);
+}
+} // namespace
+
+TEST(ShapeSplineFilters, AutomaticIsTheSwitchOfEveryShapePreservingFamily)
+{
+  ExpectAutomaticSwitch<vtkGeneralizedCubicSplineFilter>();
+  ExpectAutomaticSwitch<vtkTensionQuinticSplineFilter>();
+  ExpectAutomaticSwitch<vtkVariableDegreeSplineFilter>();
+  ExpectAutomaticSwitch<vtkQQRSplineFilter>();
+}
+
+// Code written against the older names keeps working: they set and read the
+// same switch (the build warns that they are deprecated, not here).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdeprecated-declarations"
+TEST(ShapeSplineFilters, DeprecatedAutomaticNamesForwardToAutomatic)
+{
+  vtkNew<vtkGeneralizedCubicSplineFilter> generalized;
+  generalized->AutomaticTensionOff();
+  EXPECT_FALSE(generalized->GetAutomatic());
+  generalized->AutomaticTensionOn();
+  EXPECT_TRUE(generalized->GetAutomatic());
+  generalized->SetAutomaticTension(false);
+  EXPECT_FALSE(generalized->GetAutomatic());
+  generalized->AutomaticOn();
+  EXPECT_TRUE(generalized->GetAutomaticTension());
+
+  vtkNew<vtkVariableDegreeSplineFilter> variable;
+  variable->AutomaticDegreesOff();
+  EXPECT_FALSE(variable->GetAutomatic());
+  variable->AutomaticDegreesOn();
+  EXPECT_TRUE(variable->GetAutomatic());
+  variable->SetAutomaticDegrees(false);
+  EXPECT_FALSE(variable->GetAutomatic());
+  variable->AutomaticOn();
+  EXPECT_TRUE(variable->GetAutomaticDegrees());
+
+  // And the curve is the one the new name gives.
+  vtkNew<vtkGeneralizedCubicSplineFilter> oldName, newName;
+  oldName->AutomaticTensionOff();
+  newName->AutomaticOff();
+  const double fixed = AkimaViolations(newName);
+  EXPECT_GT(fixed, 0);
+  EXPECT_EQ(AkimaViolations(oldName), fixed);
+  oldName->AutomaticTensionOn();
+  EXPECT_LT(AkimaViolations(oldName), fixed);
+}
+#pragma GCC diagnostic pop

@@ -70,7 +70,7 @@ TEST(GeneralizedCubicSplineFilter, FixedTensionEverywhereAndKindsAsStrings)
 {
   const auto data = ReadData("helix.vtp");
   const FilterRun run = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
-    f->AutomaticTensionOff();
+    f->AutomaticOff();
     f->SetSpaceKindToVariableDegree();
     f->SetTension(7.0);
   });
@@ -105,7 +105,7 @@ TEST(GeneralizedCubicSplineFilter, OutOfRangeSettingsAreClampedOrAdaptedWithAWar
   EXPECT_EQ(CellArray(degree.Output, "ShapeViolations")->GetTuple1(0), 0);
   const FilterRun trigonometric = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
     f->SetSpaceKindToTrigonometric();
-    f->AutomaticTensionOff();
+    f->AutomaticOff();
     f->SetTension(5.0);
   });
   EXPECT_EQ(CountMessages(trigonometric.Warnings, { "limited to 0.99 pi" }), 1)
@@ -146,7 +146,7 @@ TEST(GeneralizedCubicSplineFilter, TrigonometricAutomaticTensionNeverMakesALineW
   auto trigonometric = [](bool automatic) {
     return [automatic](vtkGeneralizedCubicSplineFilter* f) {
       f->SetSpaceKindToTrigonometric();
-      f->SetAutomaticTension(automatic);
+      f->SetAutomatic(automatic);
     };
   };
   const FilterRun fixed = RunGeneralized(data, trigonometric(false));
@@ -175,7 +175,7 @@ TEST(GeneralizedCubicSplineFilter, TensionPerPointFromAnInputArray)
   given->SetValue(20, -1.0);
   data->GetPointData()->AddArray(given);
   const FilterRun run = RunGeneralized(data, [](vtkGeneralizedCubicSplineFilter* f) {
-    f->AutomaticTensionOff();
+    f->AutomaticOff();
     f->SetTension(2.0);
     f->SetTensionArrayName("Stiffness");
   });

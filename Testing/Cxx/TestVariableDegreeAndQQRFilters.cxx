@@ -42,7 +42,7 @@ TEST(VariableDegreeSplineFilter, AutomaticDegreesKeepTheShapeTheQuinticBreaks)
   for (const char* name : { "akima.vtp", "rpn15a.vtp", "titanium.vtp" })
   {
     const auto data = ReadData(name);
-    const FilterRun quintic = RunFilter<VariableDegree>(data, [](VariableDegree* f) { f->AutomaticDegreesOff(); });
+    const FilterRun quintic = RunFilter<VariableDegree>(data, [](VariableDegree* f) { f->AutomaticOff(); });
     const FilterRun automatic = RunFilter<VariableDegree>(data);
     ExpectNoMessages(automatic);
     const double before = CellArray(quintic.Output, "ShapeViolations")->GetTuple1(0);
@@ -71,7 +71,7 @@ TEST(VariableDegreeSplineFilter, DegreePerPointFromAnInputArray)
   given->SetValue(20, 2.0);
   data->GetPointData()->AddArray(given);
   const FilterRun run = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
-    f->AutomaticDegreesOff();
+    f->AutomaticOff();
     f->SetDegree(6.0);
     f->SetDegreeArrayName("k");
   });
@@ -100,7 +100,7 @@ TEST(VariableDegreeSplineFilter, ApproximationModesKeepTheShapeOfPsiWithoutFlatt
       f->SetMode(mode);
       f->SetNumberOfKnots(40);
       f->SetNumberOfSubdivisions(4);
-      f->AutomaticDegreesOff();
+      f->AutomaticOff();
     });
     const FilterRun run = RunFilter<VariableDegree>(data, [mode](VariableDegree* f) {
       f->SetMode(mode);
@@ -169,7 +169,7 @@ TEST(ApproximatingFilters, NumberOfKnotsZeroLetsCrossValidationChoose)
   };
   const std::function<void(VariableDegree*)> variableDegree = [](VariableDegree* f) {
     f->SetModeToApproximateLocal();
-    f->AutomaticDegreesOff();
+    f->AutomaticOff();
   };
   EXPECT_EQ(vtkNew<Quintic>()->GetNumberOfKnots(), 0);
   EXPECT_EQ(vtkNew<VariableDegree>()->GetNumberOfKnots(), 0);
@@ -216,7 +216,7 @@ TEST(ApproximatingFilters, TheAortaCenterlineAtTheDefaults)
     { "variable degree", [&](bool automatic) {
        return RunFilter<VariableDegree>(data, [automatic](VariableDegree* f) {
          f->SetModeToApproximateLocal();
-         f->SetAutomaticDegrees(automatic);
+         f->SetAutomatic(automatic);
        });
      } } };
   for (const auto& [name, run] : runs)
@@ -422,7 +422,7 @@ TEST(Messages, SettingsTheCurveCannotTakeAreNamedInTheProjectsWords)
   huge->Fill(1e300);
   data->GetPointData()->AddArray(huge);
   const FilterRun capped = RunFilter<VariableDegree>(data, [](VariableDegree* f) {
-    f->AutomaticDegreesOff();
+    f->AutomaticOff();
     f->SetDegreeArrayName("Huge");
   });
   EXPECT_TRUE(capped.Errors.empty()) << Joined(capped.Errors);

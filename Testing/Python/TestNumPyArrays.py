@@ -4,11 +4,13 @@ PYTHONPATH at the build's site-packages: TestNumPyArrays.py
 """
 import math
 import sys
+import warnings
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import shapesplines
+from shapesplines import names
 from shapesplines.arrays import fit_curves
 
 failures = []
@@ -49,7 +51,7 @@ natural = fit_curves([points, points[::2] + 1.0], samples=3, end_condition="natu
 from shapesplines.arrays import _polydata  # the same input the helper builds
 spline.SetInputData(_polydata([points, points[::2] + 1.0]))
 spline.Update()
-direct = vtk_to_numpy(spline.GetOutput().GetPointData().GetArray("Torsion"))
+direct = vtk_to_numpy(spline.GetOutput().GetPointData().GetArray(names.Torsion))
 check(len(natural) == 2 and np.array_equal(np.concatenate([c.torsion for c in natural]), direct),
       "a list of lines: the filter's own torsion, with options (end_condition='natural')")
 
@@ -69,6 +71,34 @@ check(cubic.shape_violations > 0 and tense.shape_violations == 0 and 0 < tense.c
       "%d and %d violations, MaxTension %g" % (cubic.shape_violations, tense.shape_violations,
                                                tense.cell_arrays["MaxTension"][0]))
 
+# automatic= is every shape-preserving family's switch; the older keywords
+# still set it, with a DeprecationWarning, and the wrapped classes' old
+# method names still work.
+for family, old in (("gencubic", "automatic_tension"), ("vdps", "automatic_degrees")):
+    fixed = fit_curves(akima, family=family, automatic=False)
+    automatic = fit_curves(akima, family=family, automatic=True)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        old_fixed = fit_curves(akima, family=family, **{old: False})
+    check(fixed.shape_violations > automatic.shape_violations
+          and np.array_equal(old_fixed.points, fixed.points)
+          and any(w.category is DeprecationWarning and old in str(w.message) for w in caught),
+          "family=%r: automatic=False fixes the shape parameter, %s=False too (deprecated)" % (family, old),
+          "%d and %d violations fixed and automatic; warnings %s"
+          % (fixed.shape_violations, automatic.shape_violations, [str(w.message) for w in caught]))
+for family in ("quintic", "qqr"):
+    check(fit_curves(akima, family=family, automatic=False).shape_violations
+          > fit_curves(akima, family=family).shape_violations,
+          "family=%r: automatic=False keeps the shape parameters, so more violations" % family)
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore", DeprecationWarning)
+    old_api = shapesplines.vtkGeneralizedCubicSplineFilter()
+    old_api.SetAutomaticTension(False)
+    old_degrees = shapesplines.vtkVariableDegreeSplineFilter()
+    old_degrees.AutomaticDegreesOff()
+    check(not old_api.GetAutomatic() and not old_api.GetAutomaticTension() and not old_degrees.GetAutomatic(),
+          "the wrapped classes' old names SetAutomaticTension and AutomaticDegreesOff set Automatic")
+
 # Bad input: clear Python errors.
 for bad, what in [(np.zeros((4, 2)), "(n, 2) array"), ([np.zeros((3, 3)), np.zeros(3)], "a 1-D line")]:
     try:
@@ -82,7 +112,9 @@ for call, fragment, what in [(lambda: fit_curves(nan_points), "not finite", "NaN
                              (lambda: fit_curves(points, family="bezier"), "unknown family", "unknown family"),
                              (lambda: fit_curves(points, end_condition="free"), "must be one of clamped, natural, not_a_knot",
                               "bad option value"),
-                             (lambda: fit_curves(points, tension=2), "no option tension", "unknown option")]:
+                             (lambda: fit_curves(points, tension=2), "no option tension", "unknown option"),
+                             (lambda: fit_curves(points, family="gencubic", automatic=True, automatic_tension=True),
+                              "automatic_tension is the old name of automatic", "switch given twice")]:
     try:
         call()
         check(False, "ValueError for a %s" % what)
@@ -147,7 +179,7 @@ labels = np.arange(len(points)) // 10
 flags = np.arange(len(points)) % 3 == 0
 pair = np.column_stack([radius, -radius]).astype(np.float32)
 carried = fit_curves(points, samples=5, point_data={"radius": radius, "label": labels, "flag": flags,
-                                                    "pair": pair, "Curvature": np.ones(len(points))})
+                                                    "pair": pair, names.Curvature: np.ones(len(points))})
 # The samples' positions in data point units (5 per span: none exactly halfway,
 # where rounding decides which point is the nearer).
 where = np.arange(len(carried.points)) / 5.0
@@ -161,7 +193,7 @@ check(carried.point_data["label"].dtype == labels.dtype and np.array_equal(carri
 check(carried.point_data["pair"].shape == (len(carried.points), 2) and carried.point_data["pair"].dtype == np.float32
       and np.allclose(carried.point_data["pair"][:, 1], -carried.point_data["radius"], atol=1e-6),
       "point_data (n, 2) float32: (m, 2) float32")
-check(np.all(carried.point_data["Curvature"] == 1) and abs(carried.curvature[len(where) // 2] - 0.4) < 2e-3
+check(np.all(carried.point_data[names.Curvature] == 1) and abs(carried.curvature[len(where) // 2] - 0.4) < 2e-3
       and sorted(carried.point_arrays) == sorted(fit_curves(points, samples=5).point_arrays),
       "point_data named like a filter array (Curvature) neither replaces it nor joins point_arrays")
 # An approximation's samples lie between data points its own knots do not

@@ -1,7 +1,8 @@
 """pvpython test: the ShapeSplines plugin loads and its proxies work on real data.
 
 Run as
-    xvfb-run -a pvpython TestPluginProxies.py --plugin ShapeSplines.so --data Data \
+    PYTHONPATH=<build>/lib/python3.11/site-packages \\
+        xvfb-run -a pvpython TestPluginProxies.py --plugin ShapeSplines.so --data Data \
         --baseline Testing/Data/Baseline --temp <build>/Testing/Temporary
 
 It loads the plugin with LoadPlugin, builds every proxy of the plugin (CubicSpline,
@@ -30,6 +31,8 @@ from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
 
+from shapesplines import names  # the output array names (PYTHONPATH: the build's site-packages)
+
 START = time.time()
 parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--plugin", required=True, help="path of ShapeSplines.so")
@@ -46,16 +49,13 @@ for proxy_name in ("CubicSpline", "PolylineShapeAnalysis", "CurvatureComb", "Gen
     if proxy_name not in globals():
         raise SystemExit("LoadPlugin did not define the proxy %s" % proxy_name)
 
-POINT_CONTRACT = {"Curvature": 1, "Torsion": 1, "Tangent": 3, "Normal": 3, "Binormal": 3,
-                  "Parameter": 1, "ArcLength": 1, "SpanIndex": 1}
-CELL_CONTRACT = {"ShapePreserving": 1, "ShapeViolations": 1, "Length": 1, "Tortuosity": 1,
-                 "ConditionEstimate": 1}
-DISCRETE_ARRAYS = {"DiscreteCurvature": 1, "DiscreteTorsion": 1, "DiscreteBinormal": 3,
-                   "Collinear": 1, "Convex": 1, "Coplanar": 1}
-AUDIT_CELL_ARRAYS = ["ShapeViolations", "ShapePreserving", "CollinearityViolations",
-                     "ConvexityAtKnotViolations", "ConvexityOnSpanViolations",
-                     "CoplanarityViolations", "TorsionSignAtKnotViolations",
-                     "TorsionSignOnSpanViolations"]
+POINT_CONTRACT = {names.Curvature: 1, names.Torsion: 1, names.Tangent: 3, names.Normal: 3, names.Binormal: 3,
+                  names.Parameter: 1, names.ArcLength: 1, names.SpanIndex: 1}
+CELL_CONTRACT = {names.ShapePreserving: 1, names.ShapeViolations: 1, names.Length: 1, names.Tortuosity: 1,
+                 names.ConditionEstimate: 1}
+DISCRETE_ARRAYS = {names.DiscreteCurvature: 1, names.DiscreteTorsion: 1, names.DiscreteBinormal: 3,
+                   names.Collinear: 1, names.Convex: 1, names.Coplanar: 1}
+AUDIT_CELL_ARRAYS = [names.ShapeViolations, names.ShapePreserving, *names.CriterionViolations]
 FRAME_TOLERANCE = 1e-9
 
 # --------------------------------------------------------------------------- checks
@@ -234,20 +234,20 @@ def check_curve(label, out, inp, expected_points=None, subdivisions=None):
     if bad:
         problems.append("NaN/Inf in %s" % bad)
     # Unit, orthogonal, right-handed frames.
-    T, N, B = (point_array(out, n) for n in ("Tangent", "Normal", "Binormal"))
+    T, N, B = (point_array(out, n) for n in (names.Tangent, names.Normal, names.Binormal))
     frame_error = max([np.abs(np.linalg.norm(v, axis=1) - 1).max() for v in (T, N, B)]
                       + [np.abs(np.einsum("ij,ij->i", u, v)).max() for u, v in ((T, N), (T, B), (N, B))]
                       + [np.abs(np.cross(T, N) - B).max()])
     if not frame_error < FRAME_TOLERANCE:
         problems.append("frame error %.2g (|T|,|N|,|B| - 1, dot products, TxN - B)" % frame_error)
-    k = point_array(out, "Curvature")
+    k = point_array(out, names.Curvature)
     if k.min() < 0:
         problems.append("negative curvature %g" % k.min())
     # Per line.
     lines = lines_of(out)
-    arc, span, param = (point_array(out, n) for n in ("ArcLength", "SpanIndex", "Parameter"))
-    length, tortuosity = cell_array(out, "Length"), cell_array(out, "Tortuosity")
-    viol, preserving = cell_array(out, "ShapeViolations"), cell_array(out, "ShapePreserving")
+    arc, span, param = (point_array(out, n) for n in (names.ArcLength, names.SpanIndex, names.Parameter))
+    length, tortuosity = cell_array(out, names.Length), cell_array(out, names.Tortuosity)
+    viol, preserving = cell_array(out, names.ShapeViolations), cell_array(out, names.ShapePreserving)
     knot_error = 0.0
     forward = []
     for c, (ids, dl) in enumerate(zip(lines, data)):
@@ -301,14 +301,14 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
     check(doc is not None and (doc.GetShortHelp() or "").strip() and (doc.GetDescription() or "").strip(),
           "%s: proxy documentation" % name, "%r" % ((doc.GetShortHelp() or "")[:60] if doc else None))
     undocumented = []
-    names = proxy.ListProperties()
-    for prop_name in names:
+    property_names = proxy.ListProperties()
+    for prop_name in property_names:
         sm = proxy.GetProperty(prop_name).SMProperty
         text = sm.GetDocumentation().GetDescription() if sm.GetDocumentation() else None
         if not text or not text.strip():
             undocumented.append(prop_name)
-    check(len(names) > 0 and not undocumented, "%s: all %d properties documented" % (name, len(names)),
-          "undocumented: %s" % undocumented if undocumented else ", ".join(names))
+    check(len(property_names) > 0 and not undocumented, "%s: all %d properties documented" % (name, len(property_names)),
+          "undocumented: %s" % undocumented if undocumented else ", ".join(property_names))
     expected = {"CubicSpline": ["Input", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
                                 "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads",
                                 "EndCondition"],
@@ -319,7 +319,7 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                 "GeneralizedCubicSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                            "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                            "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads", "SpaceKind",
-                                           "AutomaticTension", "Tension", "MaxTension",
+                                           "Automatic", "AutomaticTension", "Tension", "MaxTension",
                                            "TensionArray"],
                 "TensionQuinticSpline": ["Input", "Parameterization", "Closed", "SamplingMode",
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
@@ -329,13 +329,13 @@ for proxy in (CubicSpline(Input=helix), PolylineShapeAnalysis(Input=helix),
                                          "NumberOfSubdivisions", "SampleLength", "DataShapeTolerance",
                                          "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads", "Mode", "NumberOfKnots",
                                          "CorrectParameters",
-                                         "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
+                                         "Automatic", "AutomaticDegrees", "Degree", "MaxDegree", "Lambda",
                                          "ScaleLambdaWithDegree", "EndCondition", "DegreeArray"],
                 "QQRSpline": ["Input", "Parameterization", "Closed", "SamplingMode", "NumberOfSubdivisions",
                               "SampleLength", "DataShapeTolerance", "CurveShapeTolerance", "VMTKArrayNames", "ConnectPoints", "LineIdArray", "NumberOfThreads",
                               "Mode", "Automatic", "Alpha", "Beta", "MaxAlpha", "LocalParameters", "X", "Y",
                               "Z", "ZArray", "Continuity", "FrenetOrder"]}[name]
-    check(sorted(names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(names)))
+    check(sorted(property_names) == sorted(expected), "%s: Python property names" % name, ", ".join(sorted(property_names)))
 
 # =========================================================================== CubicSpline defaults
 print("== CubicSpline at default settings on every data set")
@@ -362,7 +362,7 @@ for file_name, warnings in (("helix.vtp", ()), ("akima.vtp", ()), ("rpn15a.vtp",
 # --------------------------------------------------------------------------- helix values
 print("== helix curvature 0.4 and torsion 0.2")
 spline, out, facts = defaults["helix.vtp"]
-k, tau, span = (point_array(out, n) for n in ("Curvature", "Torsion", "SpanIndex"))
+k, tau, span = (point_array(out, n) for n in (names.Curvature, names.Torsion, names.SpanIndex))
 interior = (span >= 2) & (span <= 29)  # drop the two end spans at each end (end-condition effects)
 k_mean, tau_mean = k[interior].mean(), tau[interior].mean()
 check(abs(k_mean / 0.4 - 1) < 0.02, "helix.vtp: mean interior curvature within 2% of 0.4",
@@ -400,7 +400,7 @@ dense_helix.SetLines(dense_lines)
 dense = PVTrivialProducer()
 dense.GetClientSideObject().SetOutput(dense_helix)
 dense_out = run(LOG.watch(CubicSpline(Input=dense)), "CubicSpline(dense helix)")
-k, tau, span = (point_array(dense_out, n) for n in ("Curvature", "Torsion", "SpanIndex"))
+k, tau, span = (point_array(dense_out, n) for n in (names.Curvature, names.Torsion, names.SpanIndex))
 interior = (span >= 4) & (span <= 123)
 k_err = np.abs(k[interior] / 0.4 - 1).max()
 tau_err = np.abs(tau[interior] / 0.2 - 1).max()
@@ -431,14 +431,14 @@ for condition in ("Natural", "Not A Knot", "Clamped"):
     spline.EndCondition = condition
     out = run(spline, "EndCondition=%s" % condition)
     check_curve("EndCondition=%s" % condition, out, helix_in, expected_points=321)
-    k, tau = point_array(out, "Curvature"), point_array(out, "Torsion")
+    k, tau = point_array(out, names.Curvature), point_array(out, names.Torsion)
     ref_k, ref_tau = SCIPY[condition]
     err = max(np.abs(k[SAMPLES] - ref_k).max(), np.abs(tau[SAMPLES] - ref_tau).max())
     check(err < 1e-9, "EndCondition=%s: curvature and torsion equal SciPy's" % condition,
           "ends k=%s..%s tau=%s..%s, max |diff| %.2g" % (fmt(k[0]), fmt(k[-1]), fmt(tau[0]), fmt(tau[-1]), err))
     end_outputs[condition] = out
 natural, notaknot, clamped = (end_outputs[c] for c in ("Natural", "Not A Knot", "Clamped"))
-k_nat = point_array(natural, "Curvature")
+k_nat = point_array(natural, names.Curvature)
 check(k_nat[0] < 1e-12 and k_nat[-1] < 1e-12, "Natural: zero curvature at both ends",
       "%s, %s" % (fmt(k_nat[0]), fmt(k_nat[-1])))
 # Clamped: the end tangents are those of the parabolas through the first/last three points.
@@ -454,7 +454,7 @@ def parabola_derivative(t, p):
 
 d0 = parabola_derivative(knots[:3], pts[:3])
 dn = parabola_derivative(knots[::-1][:3], pts[::-1][:3])
-T = point_array(clamped, "Tangent")
+T = point_array(clamped, names.Tangent)
 angle = max(np.linalg.norm(np.cross(T[0], d0 / np.linalg.norm(d0))),
             np.linalg.norm(np.cross(T[-1], dn / np.linalg.norm(dn))))
 check(angle < 1e-9, "Clamped: end tangents along the end parabolas", "sin(angle) %.2g" % angle)
@@ -480,7 +480,7 @@ for kind, expected in expected_knots.items():
     spline.Parameterization = kind
     out = run(spline, "Parameterization=%s" % kind)
     check_curve("Parameterization=%s" % kind, out, akima_in, expected_points=101)
-    knots_out = point_array(out, "Parameter")[::10]
+    knots_out = point_array(out, names.Parameter)[::10]
     err = np.abs(knots_out - expected).max()
     check(err < 1e-12 * expected[-1], "Parameterization=%s: Parameter at the data points" % kind,
           "last knot %s, max |diff| %.2g" % (fmt(knots_out[-1]), err))
@@ -515,7 +515,7 @@ check(same_count and error <= 1e-14 * np.abs(want).max(),
 spline.NumberOfSubdivisions = 20
 out = run(spline, "NumberOfSubdivisions=20")
 check_curve("NumberOfSubdivisions=20", out, helix_in, expected_points=32 * 20 + 1, subdivisions=20)
-length_subdiv = cell_array(out, "Length")[0]
+length_subdiv = cell_array(out, names.Length)[0]
 spline.SamplingMode = "Arc Length"
 spline.SampleLength = 0.5
 out = run(spline, "SamplingMode=Arc Length, SampleLength=0.5")
@@ -523,7 +523,7 @@ facts = check_curve("SamplingMode=Arc Length", out, helix_in)
 n, length = out.GetNumberOfPoints(), facts["length"][0]
 check(length / 0.5 <= n - 1 <= length / 0.5 + 32, "Arc Length 0.5: about Length/0.5 samples",
       "%d samples for Length %s (Length/0.5 = %s)" % (n, fmt(length), fmt(length / 0.5)))
-arc, span = point_array(out, "ArcLength"), point_array(out, "SpanIndex")
+arc, span = point_array(out, names.ArcLength), point_array(out, names.SpanIndex)
 steps = np.diff(arc)
 same_span = span[1:] == span[:-1]
 spread = max(np.ptp(steps[(span[1:] == j) & same_span]) for j in range(32))
@@ -552,9 +552,9 @@ check(out.GetNumberOfPoints() == len(want_pts) and np.abs(points_of(out) - want_
       "%d of %d points, max |diff| %.2g, radius |diff| %.2g" % (out.GetNumberOfPoints(), aorta_in.GetNumberOfPoints(),
                                                               np.abs(points_of(out) - want_pts).max(),
                                                               np.abs(got_r - want_r).max()))
-check(list(cell_array(out, "MergedPoints")) == want_merged and sum(want_merged) > 0,
+check(list(cell_array(out, names.MergedPoints)) == want_merged and sum(want_merged) > 0,
       "aorta: the routine merge counted in MergedPoints, not warned",
-      "%s, expected %s" % (list(cell_array(out, "MergedPoints")), want_merged))
+      "%s, expected %s" % (list(cell_array(out, names.MergedPoints)), want_merged))
 
 # --------------------------------------------------------------------------- aorta arrays
 print("== aorta: two lines, repeated point, carried arrays")
@@ -567,7 +567,7 @@ check(r_out.min() >= r_in.min() - 1e-12 and r_out.max() <= r_in.max() + 1e-12,
 check(out.GetNumberOfCells() == 2 and [len(ids) for ids in facts["lines"]] == [2091, 1971],
       "aorta: 2 lines of 209 and 197 spans sampled 10 times",
       "%s samples per line" % [len(ids) for ids in facts["lines"]])
-k, tau = point_array(out, "Curvature"), point_array(out, "Torsion")
+k, tau = point_array(out, names.Curvature), point_array(out, names.Torsion)
 print("     aorta: Length %s, curvature max %s, torsion %s..%s (98th percentile |torsion| %s), "
       "ShapeViolations %s" % ([fmt(x) for x in facts["length"]], fmt(k.max()), fmt(tau.min()), fmt(tau.max()),
                               fmt(np.percentile(np.abs(tau), 98)), list(facts["violations"])))
@@ -577,13 +577,13 @@ print("== Closed")
 spline = LOG.watch(CubicSpline(Input=akima_src, Closed=1))
 out = run(spline, "Closed=1 (akima)")
 ids = lines_of(out)[0]
-arc = point_array(out, "ArcLength")
+arc = point_array(out, names.ArcLength)
 check(out.GetNumberOfPoints() == 11 * 10 and len(ids) == 111 and ids[0] == ids[-1]
-      and cell_array(out, "Tortuosity")[0] == 0
-      and cell_array(out, "Length")[0] > arc[ids[-2]] > defaults["akima.vtp"][2]["length"][0],
+      and cell_array(out, names.Tortuosity)[0] == 0
+      and cell_array(out, names.Length)[0] > arc[ids[-2]] > defaults["akima.vtp"][2]["length"][0],
       "Closed=1: periodic curve, 11 spans, seam not repeated, Tortuosity 0",
       "%d points, cell of %d ids closing on %d, Length %s (open %s)"
-      % (out.GetNumberOfPoints(), len(ids), ids[-1], fmt(cell_array(out, "Length")[0]),
+      % (out.GetNumberOfPoints(), len(ids), ids[-1], fmt(cell_array(out, names.Length)[0]),
          fmt(defaults["akima.vtp"][2]["length"][0])))
 
 # --------------------------------------------------------------------------- tolerances
@@ -592,14 +592,14 @@ spline = LOG.watch(CubicSpline(Input=akima_src))
 counts = []
 for tolerance in (1e-3, 0.1, 1.0):
     spline.CurveShapeTolerance = tolerance
-    counts.append(int(cell_array(run(spline, "CurveShapeTolerance=%g" % tolerance), "ShapeViolations")[0]))
+    counts.append(int(cell_array(run(spline, "CurveShapeTolerance=%g" % tolerance), names.ShapeViolations)[0]))
 check(counts[0] > counts[1] > counts[2] == 0 and counts[0] == defaults["akima.vtp"][2]["violations"][0],
       "CurveShapeTolerance 1e-3 / 0.1 / 1: fewer violations on akima", "%s" % counts)
 spline.CurveShapeTolerance = 1e-3
 counts = []
 for tolerance in (1e-6, 1.0):
     spline.DataShapeTolerance = tolerance
-    counts.append(int(cell_array(run(spline, "DataShapeTolerance=%g" % tolerance), "ShapeViolations")[0]))
+    counts.append(int(cell_array(run(spline, "DataShapeTolerance=%g" % tolerance), names.ShapeViolations)[0]))
 check(counts[1] > counts[0], "DataShapeTolerance 1e-6 / 1: every point collinear gives more violations on akima",
       "%s" % counts)
 
@@ -608,11 +608,11 @@ print("== VMTK Array Names")
 spline = LOG.watch(CubicSpline(Input=aorta_src, VMTKArrayNames=1))
 out = run(spline, "VMTKArrayNames=1")
 same = all(np.array_equal(point_array(out, "Frenet" + n), point_array(out, n))
-           for n in ("Tangent", "Normal", "Binormal"))
+           for n in (names.Tangent, names.Normal, names.Binormal))
 check(same, "VMTKArrayNames=1: FrenetTangent/Normal/Binormal equal Tangent/Normal/Binormal",
       "%d point arrays" % out.GetPointData().GetNumberOfArrays())
 plain = defaults["aorta-centerline.vtp"][1]
-check(all(plain.GetPointData().GetArray("Frenet" + n) is None for n in ("Tangent", "Normal", "Binormal")),
+check(all(plain.GetPointData().GetArray("Frenet" + n) is None for n in (names.Tangent, names.Normal, names.Binormal)),
       "VMTKArrayNames=0 (default): no Frenet* arrays", "%d point arrays" % plain.GetPointData().GetNumberOfArrays())
 
 # =========================================================================== PolylineShapeAnalysis
@@ -646,9 +646,9 @@ def check_discrete(label, out, inp):
 analysis = LOG.watch(PolylineShapeAnalysis(Input=helix_src))
 out = run(analysis, "PolylineShapeAnalysis(helix)")
 check_discrete("PolylineShapeAnalysis(helix)", out, helix_in)
-check(out.GetPointData().GetArray("ViolationMask") is None and out.GetCellData().GetArray("ShapeViolations") is None,
+check(out.GetPointData().GetArray(names.ViolationMask) is None and out.GetCellData().GetArray(names.ShapeViolations) is None,
       "PolylineShapeAnalysis without Curve: no audit arrays", "")
-dtau, dk = point_array(out, "DiscreteTorsion"), point_array(out, "DiscreteCurvature")
+dtau, dk = point_array(out, names.DiscreteTorsion), point_array(out, names.DiscreteCurvature)
 hp = points_of(helix_in)
 a, b = hp[1:-1] - hp[:-2], hp[2:] - hp[1:-1]
 menger = 2 * np.linalg.norm(np.cross(a, b), axis=1) / (np.linalg.norm(a, axis=1) * np.linalg.norm(b, axis=1)
@@ -658,18 +658,18 @@ check(np.all(dtau[1:31] > 0) and dtau[0] == 0 and dtau[31] == 0 and dtau[32] == 
       "interior %s..%s" % (fmt(dtau[1:31].min()), fmt(dtau[1:31].max())))
 check(np.abs(dk[1:-1] - menger).max() < 1e-12 and dk[0] == 0 and dk[-1] == 0,
       "helix: DiscreteCurvature is the Menger curvature", "%s (closed form 0.4)" % fmt(dk[1:-1].mean()))
-check(np.all(point_array(out, "Convex")[1:-1] == 1) and not np.any(point_array(out, "Collinear"))
-      and not np.any(point_array(out, "Coplanar")),
+check(np.all(point_array(out, names.Convex)[1:-1] == 1) and not np.any(point_array(out, names.Collinear))
+      and not np.any(point_array(out, names.Coplanar)),
       "helix: all interior points convex, none collinear or coplanar", "")
 
 analysis = LOG.watch(PolylineShapeAnalysis(Input=akima_src))
 out = run(analysis, "PolylineShapeAnalysis(akima)")
 check_discrete("PolylineShapeAnalysis(akima)", out, akima_in)
-collinear, convex, coplanar = (list(point_array(out, n)) for n in ("Collinear", "Convex", "Coplanar"))
+collinear, convex, coplanar = (list(point_array(out, n)) for n in (names.Collinear, names.Convex, names.Coplanar))
 check(collinear == [0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0], "akima: the flat run y=10 (points 1-4) flagged Collinear",
       "Collinear %s" % collinear)
 check(convex == [0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 0] and coplanar == [0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0]
-      and not np.any(point_array(out, "DiscreteTorsion")),
+      and not np.any(point_array(out, names.DiscreteTorsion)),
       "akima: points 5-9 convex, segments 1-8 coplanar, zero discrete torsion",
       "Convex %s, Coplanar %s" % (convex, coplanar))
 
@@ -683,30 +683,30 @@ for file_name in ("akima.vtp", "helix.vtp", "aorta-centerline.vtp"):
     out = run(analysis, "PolylineShapeAnalysis(%s, Curve)" % file_name, warnings)
     check_discrete("PolylineShapeAnalysis(%s, Curve)" % file_name, out, inp)
     missing = [n for n in AUDIT_CELL_ARRAYS if out.GetCellData().GetArray(n) is None]
-    check(out.GetPointData().GetArray("ViolationMask") is not None and not missing,
+    check(out.GetPointData().GetArray(names.ViolationMask) is not None and not missing,
           "%s: ViolationMask and the audit cell arrays present" % file_name,
           "missing %s" % missing if missing else "")
-    viol = cell_array(out, "ShapeViolations")
+    viol = cell_array(out, names.ShapeViolations)
     parts = sum(cell_array(out, n) for n in AUDIT_CELL_ARRAYS[2:])
-    filter_viol = cell_array(servermanager.Fetch(curve), "ShapeViolations")
+    filter_viol = cell_array(servermanager.Fetch(curve), names.ShapeViolations)
     # The filter audits each knot from both sides (torsion jumps at knots); the
     # analysis sees the samples only, a knot from the span after it: it can find
     # fewer torsion-sign failures, never more, and the same where torsion has no sign.
     same = np.array_equal(viol, filter_viol) if not file_name.startswith("aorta") else np.all(viol <= filter_viol)
     check(np.array_equal(viol, parts) and same
-          and np.array_equal(cell_array(out, "ShapePreserving"), (viol == 0).astype(int)),
+          and np.array_equal(cell_array(out, names.ShapePreserving), (viol == 0).astype(int)),
           "%s: ShapeViolations = sum of the criteria, and %s the filter's own audit (16 samples/span)"
           % (file_name, "at most" if file_name.startswith("aorta") else "equal to"),
           "analysis %s, filter %s" % (list(viol), list(filter_viol)))
     audits[file_name] = out
-akima_viol = cell_array(audits["akima.vtp"], "ShapeViolations")[0]
-mask = list(point_array(audits["akima.vtp"], "ViolationMask"))
+akima_viol = cell_array(audits["akima.vtp"], names.ShapeViolations)[0]
+mask = list(point_array(audits["akima.vtp"], names.ViolationMask))
 check(akima_viol > 0 and any(mask[1:5]), "akima: the cubic violates the Akima shape",
       "ShapeViolations %d, ViolationMask %s, collinearity %d, convexity at knot %d"
       % (akima_viol, mask, cell_array(audits["akima.vtp"], "CollinearityViolations")[0],
          cell_array(audits["akima.vtp"], "ConvexityAtKnotViolations")[0]))
-check(cell_array(audits["helix.vtp"], "ShapeViolations")[0] == 0
-      and not np.any(point_array(audits["helix.vtp"], "ViolationMask")),
+check(cell_array(audits["helix.vtp"], names.ShapeViolations)[0] == 0
+      and not np.any(point_array(audits["helix.vtp"], names.ViolationMask)),
       "helix: the cubic preserves the helix's shape", "ShapeViolations 0")
 
 # The audit sees the curve only at the curve's samples: at the default 10 per span
@@ -714,26 +714,26 @@ check(cell_array(audits["helix.vtp"], "ShapeViolations")[0] == 0
 curve = LOG.watch(CubicSpline(Input=aorta_src))
 coarse = run(PolylineShapeAnalysis(Input=aorta_src, Curve=curve), "aorta analysis, 10 samples/span")
 print("     aorta: ShapeViolations seen by the analysis on 10 samples/span %s, by the filter (16/span) %s"
-      % (list(cell_array(coarse, "ShapeViolations")), list(cell_array(fetch(curve), "ShapeViolations"))))
+      % (list(cell_array(coarse, names.ShapeViolations)), list(cell_array(fetch(curve), names.ShapeViolations))))
 
 print("== Closed in PolylineShapeAnalysis")
 curve = LOG.watch(CubicSpline(Input=akima_src, Closed=1, NumberOfSubdivisions=16))
 analysis = LOG.watch(PolylineShapeAnalysis(Input=akima_src, Curve=curve, Closed=1))
 out = run(analysis, "PolylineShapeAnalysis(akima, Closed=1, Curve closed)")
 check_discrete("PolylineShapeAnalysis(akima, Closed=1, Curve closed)", out, akima_in)
-dk = point_array(out, "DiscreteCurvature")
-check(dk[0] > 0 and dk[-1] > 0 and np.array_equal(cell_array(out, "ShapeViolations"),
-                                                  cell_array(fetch(curve), "ShapeViolations")),
+dk = point_array(out, names.DiscreteCurvature)
+check(dk[0] > 0 and dk[-1] > 0 and np.array_equal(cell_array(out, names.ShapeViolations),
+                                                  cell_array(fetch(curve), names.ShapeViolations)),
       "Closed=1: the ends get a discrete curvature and the closed curve is audited like the filter does",
       "DiscreteCurvature at the ends %s, %s; ShapeViolations %d"
-      % (fmt(dk[0]), fmt(dk[-1]), cell_array(out, "ShapeViolations")[0]))
+      % (fmt(dk[0]), fmt(dk[-1]), cell_array(out, names.ShapeViolations)[0]))
 analysis.Closed = 0
 out = run(analysis, "PolylineShapeAnalysis(akima, Closed=0, Curve closed)", ("not audited",))
 # A line that is not audited reads ShapeViolations -1 and ShapePreserving 0: never a pass.
-check(cell_array(out, "ShapeViolations")[0] == -1 and cell_array(out, "ShapePreserving")[0] == 0
-      and not np.any(point_array(out, "ViolationMask")),
+check(cell_array(out, names.ShapeViolations)[0] == -1 and cell_array(out, names.ShapePreserving)[0] == 0
+      and not np.any(point_array(out, names.ViolationMask)),
       "Closed=0 with a closed curve: warned and not audited",
-      "ShapeViolations 0, empty ViolationMask, ShapePreserving %d" % cell_array(out, "ShapePreserving")[0])
+      "ShapeViolations 0, empty ViolationMask, ShapePreserving %d" % cell_array(out, names.ShapePreserving)[0])
 
 # =========================================================================== CurvatureComb
 print("== CurvatureComb on the Akima cubic")
@@ -765,14 +765,14 @@ for file_name in ("akima.vtp", "rpn15a.vtp", "titanium.vtp"):
     spline = LOG.watch(GeneralizedCubicSpline(Input=src))
     out = run(spline, "GeneralizedCubicSpline(%s)" % file_name)
     tension = point_array(out, "Tension")
-    check(cell_array(plain, "ShapeViolations")[0] > 0 and cell_array(out, "ShapeViolations")[0] == 0
+    check(cell_array(plain, names.ShapeViolations)[0] > 0 and cell_array(out, names.ShapeViolations)[0] == 0
           and cell_array(out, "MaxTension")[0] == tension.max() > 0 and tension.min() == 0,
           "%s: the cubic breaks the shape, the automatic tension does not, and only some spans are tensioned"
           % file_name, "cubic %d violations, generalized %d; tension %s..%s"
-          % (cell_array(plain, "ShapeViolations")[0], cell_array(out, "ShapeViolations")[0],
+          % (cell_array(plain, names.ShapeViolations)[0], cell_array(out, names.ShapeViolations)[0],
              fmt(tension.min()), fmt(tension.max())))
 spline = LOG.watch(GeneralizedCubicSpline(Input=reader("akima.vtp"), SpaceKind="Trigonometric", Tension=5.0,
-                                          AutomaticTension=0))
+                                          Automatic=0))
 out = run(spline, "GeneralizedCubicSpline(akima, Trigonometric, Tension=5)", ("limited to 0.99 pi",))
 check(abs(point_array(out, "Tension").max() - 0.99 * np.pi) < 1e-12,
       "Trigonometric tension 5 is limited to 0.99 pi, with a warning")
@@ -795,53 +795,53 @@ for continuity in ("C3", "C4"):
                 ["keep shape violations", "collinearity at knot"])
     # Fewer violations, and no cusp: the curvature within 1e4 times the data's
     # largest discrete curvature (Akima's straight run would need one).
-    largest = point_array(a_out, "Curvature").max()
-    check(cell_array(a_out, "ShapeViolations")[0] < cell_array(p_out, "ShapeViolations")[0]
+    largest = point_array(a_out, names.Curvature).max()
+    check(cell_array(a_out, names.ShapeViolations)[0] < cell_array(p_out, names.ShapeViolations)[0]
           and 0 < cell_array(a_out, "MinGamma")[0] <= 1 and largest <= 1e4 * akima_menger,
           "TensionQuinticSpline %s: Akima's violations at gamma = 1 lowered in automatic mode, no cusp" % continuity,
           "%d -> %d violations, MinGamma %s, largest curvature %s (data's %s)" % (
-              cell_array(p_out, "ShapeViolations")[0], cell_array(a_out, "ShapeViolations")[0],
+              cell_array(p_out, names.ShapeViolations)[0], cell_array(a_out, names.ShapeViolations)[0],
               fmt(cell_array(a_out, "MinGamma")[0]), fmt(largest), fmt(akima_menger)))
 out = run(LOG.watch(TensionQuinticSpline(Input=reader("helix.vtp"))), "TensionQuinticSpline(helix)")
-k, tau = interior_values(point_array(out, "Curvature")), interior_values(point_array(out, "Torsion"))
+k, tau = interior_values(point_array(out, names.Curvature)), interior_values(point_array(out, names.Torsion))
 check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
       "TensionQuinticSpline(helix, 8 points per turn): curvature 0.4 and torsion 0.2 within 1%",
       "curvature %s..%s, torsion %s..%s" % (fmt(k.min()), fmt(k.max()), fmt(tau.min()), fmt(tau.max())))
 
 # =========================================================================== VariableDegreeSpline
 print("== VariableDegreeSpline on Akima's data, the helix and noisy helix points")
-plain = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp"), AutomaticDegrees=0))
+plain = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp"), Automatic=0))
 automatic = LOG.watch(VariableDegreeSpline(Input=reader("akima.vtp")))
 p_out = run(plain, "VariableDegreeSpline(akima, degree 5)")
 a_out = run(automatic, "VariableDegreeSpline(akima, automatic)")
 degree = point_array(a_out, "Degree")
-check(cell_array(p_out, "ShapeViolations")[0] > 0 and cell_array(a_out, "ShapeViolations")[0] == 0
+check(cell_array(p_out, names.ShapeViolations)[0] > 0 and cell_array(a_out, names.ShapeViolations)[0] == 0
       and degree.min() < degree.max() == cell_array(a_out, "MaxDegree")[0],
       "VariableDegreeSpline: Akima's shape broken by the quintic, kept with degrees raised where needed",
-      "%d -> %d violations, MaxDegree %s" % (cell_array(p_out, "ShapeViolations")[0],
-                                            cell_array(a_out, "ShapeViolations")[0],
+      "%d -> %d violations, MaxDegree %s" % (cell_array(p_out, names.ShapeViolations)[0],
+                                            cell_array(a_out, names.ShapeViolations)[0],
                                             fmt(cell_array(a_out, "MaxDegree")[0])))
 out = run(LOG.watch(VariableDegreeSpline(Input=reader("helix.vtp"))), "VariableDegreeSpline(helix)")
-k, tau = interior_values(point_array(out, "Curvature")), interior_values(point_array(out, "Torsion"))
+k, tau = interior_values(point_array(out, names.Curvature)), interior_values(point_array(out, names.Torsion))
 check(np.max(np.abs(k - 0.4)) < 4e-3 and np.max(np.abs(tau - 0.2)) < 4e-3,
       "VariableDegreeSpline(helix, 8 points per turn): curvature 0.4 and torsion 0.2 within 1%",
       "curvature %s..%s, torsion %s..%s" % (fmt(k.min()), fmt(k.max()), fmt(tau.min()), fmt(tau.max())))
 for mode in ("Approximate Global", "Approximate Local"):
     out = run(LOG.watch(VariableDegreeSpline(Input=reader("helix.vtp"), Mode=mode, NumberOfKnots=6)),
               "VariableDegreeSpline(helix, %s)" % mode)
-    check(cell_array(out, "ShapeViolations")[0] == 0 and point_array(out, "Degree").min() >= 5,
+    check(cell_array(out, names.ShapeViolations)[0] == 0 and point_array(out, "Degree").min() >= 5,
           "VariableDegreeSpline %s: keeps the shape of psi" % mode,
-          "violations %d" % cell_array(out, "ShapeViolations")[0])
+          "violations %d" % cell_array(out, names.ShapeViolations)[0])
 
 # =========================================================================== QQRSpline
 print("== QQRSpline on Akima's data and the helix")
 out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"))), "QQRSpline(akima, interpolation)",
           ["keep shape violations", "collinearity at knots"])
-automatic = cell_array(out, "ShapeViolations")[0]
+automatic = cell_array(out, names.ShapeViolations)[0]
 fixed_out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"), Automatic=0)), "QQRSpline(akima, alpha 4)")
-check(automatic <= cell_array(fixed_out, "ShapeViolations")[0] and point_array(fixed_out, "Alpha").max() == 4,
+check(automatic <= cell_array(fixed_out, names.ShapeViolations)[0] and point_array(fixed_out, "Alpha").max() == 4,
       "QQRSpline: automatic never worse than alpha = beta = 4; Alpha written",
-      "%d (automatic) vs %d violations" % (automatic, cell_array(fixed_out, "ShapeViolations")[0]))
+      "%d (automatic) vs %d violations" % (automatic, cell_array(fixed_out, names.ShapeViolations)[0]))
 polygon = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0)),
               "QQRSpline(helix, control polygon)")
 cubic_bspline = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0,
@@ -852,6 +852,34 @@ check(point_array(cubic_bspline, "Alpha").min() == 6 and point_array(polygon, "A
       "Alpha %s" % fmt(point_array(cubic_bspline, "Alpha").min()))
 run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Continuity="C2 and FC(2l+3)")),
     "QQRSpline(helix, interpolation, FC asked)", ("using C2",))
+
+# =========================================================================== Automatic, old names
+print("== Automatic on every shape-preserving family; the old names still set it")
+
+
+def akima_violations(proxy):
+    return cell_array(run(proxy, proxy.GetXMLName()), names.ShapeViolations)[0]
+
+
+for family, old in ((GeneralizedCubicSpline, "AutomaticTension"), (TensionQuinticSpline, None),
+                    (VariableDegreeSpline, "AutomaticDegrees"), (QQRSpline, None)):
+    automatic = akima_violations(family(Input=reader("akima.vtp")))
+    fixed = akima_violations(family(Input=reader("akima.vtp"), Automatic=0))
+    check(fixed > automatic, "%s: Automatic=0 fixes the shape parameters" % family.__name__,
+          "Akima's violations %d fixed, %d automatic" % (fixed, automatic))
+    if old is None:
+        continue
+    # The old name is a hidden alias of Automatic, empty until a script sets
+    # it: it sets Automatic at creation and later, and never overrides it.
+    proxy = family(Input=reader("akima.vtp"), **{old: 0})
+    states = [akima_violations(proxy)]
+    setattr(proxy, old, 1)
+    states.append(akima_violations(proxy))
+    proxy.Automatic = 0
+    states.append(akima_violations(proxy))
+    check(states == [fixed, automatic, fixed] and proxy.GetProperty(old).SMProperty.GetPanelVisibility() == "never",
+          "%s: the hidden old name %s still sets Automatic" % (family.__name__, old),
+          "violations after %s=0, %s=1, Automatic=0: %s" % (old, old, states))
 
 # =========================================================================== Table To Points
 print("== CSV -> Table To Points -> spline filter (Connect Points)")
@@ -868,12 +896,12 @@ table_points = TableToPoints(Input=CSVReader(FileName=[csv_path]), XColumn="x", 
                              ZColumn="z")
 for family in (CubicSpline, GeneralizedCubicSpline):
     out = run(LOG.watch(family(Input=table_points)), "%s(Table To Points)" % family.__name__)
-    lengths = cell_array(out, "Length")
-    check(out.GetNumberOfLines() == 2 and list(cell_array(out, "LineId")) == [5, 7]
+    lengths = cell_array(out, names.Length)
+    check(out.GetNumberOfLines() == 2 and list(cell_array(out, names.LineId)) == [5, 7]
           and np.abs(lengths - 7.6 * math.sqrt(1.0625)).max() < 0.01,
           "%s(Table To Points): two lines, LineId 5 and 7, each one helix long" % family.__name__,
           "%d lines, LineId %s, lengths %s" % (out.GetNumberOfLines(),
-                                               list(cell_array(out, "LineId")), np.round(lengths, 4)))
+                                               list(cell_array(out, names.LineId)), np.round(lengths, 4)))
 out = run(LOG.watch(CubicSpline(Input=table_points, ConnectPoints=0)), "CubicSpline(points, ConnectPoints=0)",
           ("Input has no lines",))
 check(out.GetNumberOfPoints() == 0, "Connect Points off: points without lines give an empty output",

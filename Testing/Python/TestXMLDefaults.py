@@ -7,7 +7,10 @@ Run as
 For each ShapeSplines proxy, each property with a Set command is compared with
 Get<Name>() of a new instance of the wrapped class (from the shapesplines
 package, without the plugin's XML): a C++ user and a ParaView user start from
-the same settings. A string array property's "None" equals a null name.
+the same settings. A string array property's "None" equals a null name. A
+deprecated old name (an empty, hidden property that sets the same thing as a
+visible one) has no default of its own: it must be hidden, empty, and share
+its command with a visible property.
 """
 import argparse
 import math
@@ -24,19 +27,29 @@ LoadPlugin(args.plugin, remote=False)
 
 PROXIES = ("CubicSpline", "GeneralizedCubicSpline", "TensionQuinticSpline", "VariableDegreeSpline",
            "QQRSpline", "PolylineShapeAnalysis", "CurvatureComb")
-failures, compared = [], 0
+failures, compared, aliases = [], 0, 0
 pxm = servermanager.ProxyManager()
 for name in PROXIES:
     proxy = pxm.SMProxyManager.NewProxy("filters", name)
     fresh = getattr(shapesplines, proxy.GetVTKClassName())()
     iterator = proxy.NewPropertyIterator()
     iterator.Begin()
+    properties = []
     while not iterator.IsAtEnd():
-        prop = iterator.GetProperty()
-        command = prop.GetCommand()
+        properties.append(iterator.GetProperty())
         iterator.Next()
+    visible_commands = {p.GetCommand() for p in properties if p.GetPanelVisibility() != "never"}
+    for prop in properties:
+        command = prop.GetCommand()
         if not command or not command.startswith("Set") or prop.IsA("vtkSMInputProperty") \
                 or prop.GetInformationOnly():
+            continue
+        if prop.GetPanelVisibility() == "never" and prop.GetRepeatable():
+            aliases += 1
+            if prop.GetNumberOfElements() != 0 or command not in visible_commands:
+                failures.append("%s.%s: an old name must be empty and set what a visible property sets"
+                                " (%d elements, %s)" % (name, prop.GetXMLName(), prop.GetNumberOfElements(),
+                                                       command))
             continue
         getter = getattr(fresh, "Get" + command[3:], None)
         if getter is None:
@@ -60,4 +73,5 @@ if failures:
     for f in failures:
         print("  - " + f)
     sys.exit(1)
-print("All %d property defaults of %d proxies equal the C++ defaults." % (compared, len(PROXIES)))
+print("All %d property defaults of %d proxies equal the C++ defaults (%d old names checked empty)."
+      % (compared, len(PROXIES), aliases))
