@@ -573,7 +573,9 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
   if (fit.Plan.LengthIncreased)
   {
     vtkWarningWithObjectMacro(self, "Line (" << line.Name
-                                    << "): SampleLength too small, sample spacing widened.");
+                                    << "): sample spacing widened beyond SampleLength: a line "
+                                    << "takes at most 1e7 samples, and no more than its polyline "
+                                    << "100 times over would (a longer curve has left its data).");
   }
 }
 

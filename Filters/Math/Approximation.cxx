@@ -114,7 +114,10 @@ QuinticFit::QuinticFit(const std::vector<double>& knots, bool closed)
       this->T.push_back(knots[std::clamp(j, 0, this->Spans)]);
       continue;
     }
-    const int wraps = j < 0 ? -1 : (j > this->Spans ? 1 : 0);
+    // Whole periods before or after j (more than one when there are fewer
+    // spans than the degree).
+    const int wraps = j < 0 ? -((this->Spans - 1 - j) / this->Spans)
+                            : (j > this->Spans ? (j - 1) / this->Spans : 0);
     this->T.push_back(knots[j - wraps * this->Spans] + wraps * period);
   }
 }

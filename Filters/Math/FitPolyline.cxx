@@ -315,6 +315,15 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
                               options.AuditSubdivisions, fit.CoordinateNoise, options.Progress);
   SamplingOptions sampling = options.Sampling;
   sampling.TargetLength /= fit.Scale; // the curve is normalised; the option is in data units
+  if (sampling.SampleMode == SamplingOptions::Mode::ArcLength && sampling.TargetLength > 0.0)
+  {
+    const double runaway = RunawayLengthFactor * reference.length() / sampling.TargetLength;
+    if (runaway < static_cast<double>(sampling.MaximumSamples))
+    {
+      sampling.MaximumSamples =
+        std::max(static_cast<long>(std::ceil(runaway)), 2L * fit.Spline->numberOfSpans() + 2);
+    }
+  }
   fit.Plan = planSamples(*fit.Spline, sampling);
   return fit;
 }

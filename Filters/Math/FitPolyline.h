@@ -188,6 +188,11 @@ constexpr int CrossValidatedKnots = -1;
 /// its arc length) can leave the double range.
 constexpr double LargestCoordinate = 1e300;
 
+/// Arc-length sampling takes at most the samples this many times the
+/// polyline's length would: a curve longer than that has left its data (its
+/// audit says so), and sampling it all would take minutes for nothing.
+constexpr double RunawayLengthFactor = 100.0;
+
 /// Lines whose distinct points span less than this are refused: in the
 /// subnormal range their differences lose every digit.
 constexpr double SmallestExtent = 1e-300;

@@ -10,6 +10,16 @@ Vec3 CleanPolyline::segment(int i) const
   return this->Points[(i + 1) % n] - this->Points[i];
 }
 
+double CleanPolyline::length() const
+{
+  double total = 0.0;
+  for (int i = 0; i < this->numberOfSpans(); ++i)
+  {
+    total += this->segment(i).norm();
+  }
+  return total;
+}
+
 std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points)
 {
   Vec3 lo = points.front();

@@ -35,6 +35,8 @@ struct CleanPolyline
   }
   /// I_{i+1} - I_i, with I_n = I_0 on a closed line.
   Vec3 segment(int i) const;
+  /// The polyline's length (a closed line's includes the closing segment).
+  double length() const;
 };
 
 /// Lowest and highest corner of the axis-aligned bounding box (points not empty).

@@ -86,25 +86,30 @@ TEST(Approximation, QuinticFitReproducesAQuinticSplineAndItsDerivatives)
     {
       u.push_back(static_cast<double>(noisy.size()) + 0.5);
     }
-    const std::vector<double> knots = uniformKnots(u, closed ? 8 : 7);
-    const auto first = QuinticFit::solve(noisy, u, knots, closed);
-    ASSERT_TRUE(first);
-    std::vector<Vec3> onCurve;
-    for (size_t j = 0; j < noisy.size(); ++j)
+    // Closed, also fewer spans than the degree: the periodic knots wrap more than once.
+    for (const int count : closed ? std::vector<int>{ 8, 4, 3 } : std::vector<int>{ 7 })
     {
-      onCurve.push_back(first->evaluate(u[j])[0]);
-    }
-    const auto second = QuinticFit::solve(onCurve, u, knots, closed);
-    ASSERT_TRUE(second);
-    EXPECT_LT(second->residual(onCurve, u), 1e-20);
-    for (const double at : { 3.3, 20.0, 41.7, 77.0 })
-    {
-      const auto d = second->evaluate(at);
-      const double h = 1e-4;
-      const Vec3 slope = (second->evaluate(at + h)[0] - second->evaluate(at - h)[0]) / (2 * h);
-      const Vec3 bend = (second->evaluate(at + h)[1] - second->evaluate(at - h)[1]) / (2 * h);
-      EXPECT_LT((d[1] - slope).norm(), 1e-6 * (1.0 + slope.norm())) << at;
-      EXPECT_LT((d[2] - bend).norm(), 1e-6 * (1.0 + bend.norm())) << at;
+      SCOPED_TRACE(count);
+      const std::vector<double> knots = uniformKnots(u, count);
+      const auto first = QuinticFit::solve(noisy, u, knots, closed);
+      ASSERT_TRUE(first);
+      std::vector<Vec3> onCurve;
+      for (size_t j = 0; j < noisy.size(); ++j)
+      {
+        onCurve.push_back(first->evaluate(u[j])[0]);
+      }
+      const auto second = QuinticFit::solve(onCurve, u, knots, closed);
+      ASSERT_TRUE(second);
+      EXPECT_LT(second->residual(onCurve, u), 1e-20);
+      for (const double at : { 3.3, 20.0, 41.7, 77.0 })
+      {
+        const auto d = second->evaluate(at);
+        const double h = 1e-4;
+        const Vec3 slope = (second->evaluate(at + h)[0] - second->evaluate(at - h)[0]) / (2 * h);
+        const Vec3 bend = (second->evaluate(at + h)[1] - second->evaluate(at - h)[1]) / (2 * h);
+        EXPECT_LT((d[1] - slope).norm(), 1e-6 * (1.0 + slope.norm())) << at;
+        EXPECT_LT((d[2] - bend).norm(), 1e-6 * (1.0 + bend.norm())) << at;
+      }
     }
   }
 }

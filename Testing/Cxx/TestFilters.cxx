@@ -1572,6 +1572,41 @@ TEST(DamagedArrays, ArraysWithoutATuplePerPointOrCellAreLeftOutWithAWarning)
   EXPECT_EQ(comb.Output->GetNumberOfPoints(), 0);
 }
 
+TEST(RunawayCurve, ArcLengthSamplingStopsAtAHundredTimesThePolyline)
+{
+  // A closed line through two points 7e31 apart, one 1.25e22 from them and
+  // one 1e-31 from that (found by fuzz_filters): the variable degree spline
+  // through it is 9e5 diagonals long. Sampled every hundredth of a diagonal
+  // it took 1e7 samples and a minute; the samples now stop at what 100
+  // polylines would take, and the warnings say why.
+  const Polyline points = { { 2.6173876791765426e+29, 1.6201960940301341e+25, 7.1439580550144634e+31 },
+    { 2.5166807544035772e-38, 1.0170419441111061e-31, 1.4901407869630105e-41 },
+    { 0, -1.2526493273453299e+22, 1.5871023001658282e-36 }, { 0, 0, 0 } };
+  const auto data = PolylinesData({ points });
+  double bounds[6];
+  data->GetBounds(bounds);
+  const double diagonal = std::hypot(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
+  double polyline = 0.0;
+  for (size_t k = 0; k < points.size(); ++k)
+  {
+    const Point& a = points[k];
+    const Point& b = points[(k + 1) % points.size()];
+    polyline += std::hypot(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+  }
+  vtkNew<vtkVariableDegreeSplineFilter> spline;
+  spline->SetClosed(true);
+  spline->SetSamplingModeToArcLength();
+  spline->SetSampleLength(1e-2 * diagonal);
+  spline->SetInputData(data);
+  const FilterRun run = UpdateChecked(data, spline, { spline });
+  EXPECT_GT(CellArray(run.Output, "Length")->GetTuple1(0), 1e3 * polyline);
+  EXPECT_LE(run.Output->GetNumberOfPoints(), 100.0 * polyline / (1e-2 * diagonal) + 10);
+  EXPECT_GT(run.Output->GetNumberOfPoints(), 1000);
+  EXPECT_EQ(CellArray(run.Output, "ShapePreserving")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CountMessages(run.Warnings, { "sample spacing widened", "100 times" }), 1) << Joined(run.Warnings);
+  EXPECT_EQ(CountMessages(run.Warnings, { "strays" }), 1) << Joined(run.Warnings);
+}
+
 /// Distance from p to the segment ab.
 double DistanceToSegment(const Point& p, const Point& a, const Point& b)
 {

@@ -1,12 +1,16 @@
-# Builds the fuzz target with clang++ and runs it for a bounded time:
+# Builds a fuzz target with clang++ and runs it for a bounded time:
 #   cmake -DSOURCE_DIR=<repo root> -DWORK_DIR=<build dir> [-DSECONDS=60]
+#         [-DFUZZ_TARGET=fuzz_fit|fuzz_filters] [-DParaView_DIR=<dir> (fuzz_filters)]
 #         [-DCXX_COMPILER=clang++] [-DREGRESSIONS=OFF] [-DFUZZ_ARGS="-seed=1;-max_len=2048"]
 #         -P RunFuzz.cmake
-# 1. configures and builds Testing/Fuzz in WORK_DIR/build;
-# 2. runs every file of Testing/Fuzz/regressions/ (if any) once through fuzz_fit, and
-#    those of regressions/extra/ too when FUZZ_FIT_EXTRA=1 is in the environment;
+# 1. configures and builds Testing/Fuzz's FUZZ_TARGET (default fuzz_fit, the math core;
+#    fuzz_filters is the VTK layer) in WORK_DIR/build;
+# 2. runs every file of the target's regressions (Testing/Fuzz/regressions/ for
+#    fuzz_fit, Testing/Fuzz/filters/regressions/ for fuzz_filters) once, and for
+#    fuzz_fit those of regressions/extra/ too when FUZZ_FIT_EXTRA=1 is in the environment;
 # 3. unless SECONDS is 0, fuzzes for SECONDS seconds from WORK_DIR/corpus (new inputs
-#    are kept there between runs) and the seed corpus Testing/Fuzz/corpus.
+#    are kept there between runs) and the target's seed corpus (Testing/Fuzz/corpus,
+#    Testing/Fuzz/filters/corpus).
 # Any failure is a FATAL_ERROR showing libFuzzer's last lines; libFuzzer leaves the
 # failing input as WORK_DIR/crash-* (or timeout-*, oom-*, leak-*), whose path is printed.
 # fuzz_fit reads FUZZ_FIT_EXTRA, FUZZ_FIT_EXPONENT_LIMIT and FUZZ_FIT_VERBOSE from the
@@ -29,11 +33,24 @@ if (NOT DEFINED CXX_COMPILER OR CXX_COMPILER STREQUAL "")
 endif ()
 get_filename_component(SOURCE_DIR "${SOURCE_DIR}" ABSOLUTE)
 get_filename_component(WORK_DIR "${WORK_DIR}" ABSOLUTE)
+if (NOT DEFINED FUZZ_TARGET OR FUZZ_TARGET STREQUAL "")
+  set(FUZZ_TARGET fuzz_fit)
+endif ()
 set(fuzz_source_dir "${SOURCE_DIR}/Testing/Fuzz")
 set(build_dir "${WORK_DIR}/build")
-set(seed_corpus "${fuzz_source_dir}/corpus")
 set(work_corpus "${WORK_DIR}/corpus")
-set(regression_dir "${fuzz_source_dir}/regressions")
+set(configure_options "")
+if (FUZZ_TARGET STREQUAL "fuzz_filters")
+  set(seed_corpus "${fuzz_source_dir}/filters/corpus")
+  set(regression_dir "${fuzz_source_dir}/filters/regressions")
+  list(APPEND configure_options -DFUZZ_FILTERS=ON)
+  if (DEFINED ParaView_DIR)
+    list(APPEND configure_options "-DParaView_DIR=${ParaView_DIR}")
+  endif ()
+else ()
+  set(seed_corpus "${fuzz_source_dir}/corpus")
+  set(regression_dir "${fuzz_source_dir}/regressions")
+endif ()
 file(MAKE_DIRECTORY "${WORK_DIR}" "${work_corpus}")
 
 # Prints the last `count` lines of a log and fails.
@@ -62,7 +79,8 @@ function(fuzz_fail what log_file count)
     endif ()
   endforeach ()
   if (found)
-    set(found "Failing input(s) kept (reproduce: FUZZ_FIT_VERBOSE=1 ${build_dir}/fuzz_fit <file>):\n${found}")
+    string(TOUPPER "${FUZZ_TARGET}" verbose)
+    set(found "Failing input(s) kept (reproduce: ${verbose}_VERBOSE=1 ${build_dir}/${FUZZ_TARGET} <file>):\n${found}")
   endif ()
   # The diagnosis lines, wherever they are in a long report.
   file(STRINGS "${log_file}" key REGEX
@@ -80,22 +98,23 @@ set(build_log "${WORK_DIR}/build.log")
 execute_process(
   COMMAND "${CMAKE_COMMAND}" -S "${fuzz_source_dir}" -B "${build_dir}"
           "-DCMAKE_CXX_COMPILER=${CXX_COMPILER}" "-DSHAPESPLINES_SOURCE_DIR=${SOURCE_DIR}"
+          ${configure_options}
   RESULT_VARIABLE result OUTPUT_FILE "${build_log}" ERROR_FILE "${build_log}")
 if (NOT result EQUAL 0)
   fuzz_fail("Configuring the fuzz project (${CXX_COMPILER})" "${build_log}" 40)
 endif ()
 cmake_host_system_information(RESULT cores QUERY NUMBER_OF_LOGICAL_CORES)
 execute_process(
-  COMMAND "${CMAKE_COMMAND}" --build "${build_dir}" --parallel ${cores}
+  COMMAND "${CMAKE_COMMAND}" --build "${build_dir}" --target ${FUZZ_TARGET} --parallel ${cores}
   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
 file(APPEND "${build_log}" "${out}")
 if (NOT result EQUAL 0)
-  fuzz_fail("Building fuzz_fit" "${build_log}" 40)
+  fuzz_fail("Building ${FUZZ_TARGET}" "${build_log}" 40)
 endif ()
-set(fuzzer "${build_dir}/fuzz_fit")
+set(fuzzer "${build_dir}/${FUZZ_TARGET}")
 string(TIMESTAMP built "%s")
 math(EXPR build_seconds "${built} - ${start}")
-message(STATUS "fuzz_fit built in ${build_seconds} s: ${fuzzer}")
+message(STATUS "${FUZZ_TARGET} built in ${build_seconds} s: ${fuzzer}")
 
 set(ENV{ASAN_OPTIONS} "abort_on_error=1:detect_leaks=1:symbolize=1")
 set(ENV{UBSAN_OPTIONS} "print_stacktrace=1:halt_on_error=1")
@@ -125,7 +144,7 @@ if (regressions)
     fuzz_fail("Regression input ${failing} (exit ${result}; the first failing of ${count})"
       "${log}" 60 ${artifacts_before})
   endif ()
-  message(STATUS "fuzz_fit: ${count} regression input(s) pass")
+  message(STATUS "${FUZZ_TARGET}: ${count} regression input(s) pass")
 endif ()
 
 # 3. Fuzzing. A hang shows as an input over the per-input timeout: 30 s, not
@@ -139,9 +158,9 @@ if (SECONDS GREATER 0)
             -print_final_stats=1 ${FUZZ_ARGS} "${work_corpus}" "${seed_corpus}"
     WORKING_DIRECTORY "${WORK_DIR}" RESULT_VARIABLE result OUTPUT_FILE "${log}" ERROR_FILE "${log}")
   if (NOT result EQUAL 0)
-    fuzz_fail("fuzz_fit -max_total_time=${SECONDS} (exit ${result})" "${log}" 60 ${artifacts_before})
+    fuzz_fail("${FUZZ_TARGET} -max_total_time=${SECONDS} (exit ${result})" "${log}" 60 ${artifacts_before})
   endif ()
   file(STRINGS "${log}" summary REGEX "^(#[0-9]+[ \t]+DONE|Done [0-9]+ runs|stat::)")
   string(REPLACE ";" "\n  " summary "${summary}")
-  message(STATUS "fuzz_fit: no failure in ${SECONDS} s (log: ${log})\n  ${summary}")
+  message(STATUS "${FUZZ_TARGET}: no failure in ${SECONDS} s (log: ${log})\n  ${summary}")
 endif ()

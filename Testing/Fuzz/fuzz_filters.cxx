@@ -270,7 +270,7 @@ vtkSmartPointer<vtkShapeSplineFilter> makeFilter(const Input& input, bool& appro
     {
       auto generalized = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
       generalized->SetSpaceKind(kind);
-      generalized->SetAutomaticTension(automatic);
+      generalized->SetAutomatic(automatic);
       generalized->SetTension(input.First);
       generalized->SetMaxTension(input.Second);
       generalized->SetTensionArrayName(input.flag(4) ? PerPointArray : nullptr);
@@ -283,7 +283,7 @@ vtkSmartPointer<vtkShapeSplineFilter> makeFilter(const Input& input, bool& appro
       variable->SetMode(other ? 1 + (kind & 1) : 0);
       approximates = other;
       variable->SetNumberOfKnots(knots);
-      variable->SetAutomaticDegrees(automatic);
+      variable->SetAutomatic(automatic);
       variable->SetDegree(input.First);
       variable->SetMaxDegree(input.Second);
       variable->SetLambda(input.Second);
@@ -472,7 +472,9 @@ void checkDeviation(vtkPolyData* input, vtkPolyData* output, bool approximates, 
     {
       continue;
     }
-    for (vtkIdType k = 0; k + 1 < count + (closed && count > 2 ? 1 : 0); ++k)
+    // A one-point line (passed through) is a segment of length 0.
+    const vtkIdType segmentCount = count == 1 ? 1 : count - 1 + (closed && count > 2 ? 1 : 0);
+    for (vtkIdType k = 0; k < segmentCount; ++k)
     {
       std::array<double, 6> s;
       input->GetPoint(ids[k], s.data());
@@ -486,6 +488,16 @@ void checkDeviation(vtkPolyData* input, vtkPolyData* output, bool approximates, 
           largest = std::max(largest, std::abs(v));
         }
       }
+    }
+  }
+  // Distances in units of the largest coordinate (a power of two): squares of
+  // coordinates near 1e300 would overflow.
+  const double unit = largest > 0.0 ? std::ldexp(1.0, std::ilogb(largest)) : 1.0;
+  for (auto& s : segments)
+  {
+    for (double& v : s)
+    {
+      v /= unit;
     }
   }
   vtkCellArray* curves = output->GetLines();
@@ -504,11 +516,15 @@ void checkDeviation(vtkPolyData* input, vtkPolyData* output, bool approximates, 
       continue;
     }
     const double bound =
-      2.0 * shapesplines::MaximumPolygonDeviation * longest + 1e-9 * largest;
+      (2.0 * shapesplines::MaximumPolygonDeviation * longest + 1e-9 * largest) / unit;
     for (vtkIdType k = 0; k < count; ++k)
     {
       double p[3];
       output->GetPoint(ids[k], p);
+      for (double& v : p)
+      {
+        v /= unit;
+      }
       double nearest = Inf;
       for (const auto& s : segments)
       {
@@ -518,6 +534,27 @@ void checkDeviation(vtkPolyData* input, vtkPolyData* output, bool approximates, 
         "line %lld is called shape-preserving but its sample %lld is %g from the data (bound %g)",
         static_cast<long long>(cell), static_cast<long long>(k), nearest, bound);
     }
+  }
+}
+
+void printLines(const char* what, vtkPolyData* data)
+{
+  vtkCellArray* lines = data->GetLines();
+  const vtkIdType* ids = nullptr;
+  vtkIdType count = 0, cell = 0;
+  for (lines->InitTraversal(); lines->GetNextCell(count, ids); ++cell)
+  {
+    std::fprintf(stderr, "%s line %lld:", what, static_cast<long long>(cell));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double p[3] = { NaN, NaN, NaN };
+      if (ids[k] >= 0 && ids[k] < data->GetNumberOfPoints())
+      {
+        data->GetPoint(ids[k], p);
+      }
+      std::fprintf(stderr, " %lld (%g %g %g)", static_cast<long long>(ids[k]), p[0], p[1], p[2]);
+    }
+    std::fprintf(stderr, "\n");
   }
 }
 
@@ -544,7 +581,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     std::fprintf(stderr, "filter %d flags 0x%02x sampling %d kinds %d values %g %g knots %d\n",
       input.Filter, input.Flags, input.Sampling, input.Kinds, input.First, input.Second,
       input.Knots);
-    input.Data->Print(std::cerr);
+    for (vtkIdType i = 0; i < input.Data->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      input.Data->GetPoint(i, p);
+      std::fprintf(stderr, "point %lld: %.17g %.17g %.17g\n", static_cast<long long>(i), p[0], p[1], p[2]);
+    }
+    printLines("input", input.Data);
   }
   const Snapshot before(input.Data);
   bool approximates = false;
@@ -553,6 +596,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   filter->Update();
   CHECK(Snapshot(input.Data) == before, "the spline filter changed its input");
   vtkPolyData* curve = filter->GetOutput();
+  if (verbose())
+  {
+    printLines("output", curve);
+  }
   checkOutput(curve, filter->GetClassName());
   checkDeviation(input.Data, curve, approximates, input.flag(0));
 

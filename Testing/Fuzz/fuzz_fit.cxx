@@ -441,12 +441,19 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     return -1; // libFuzzer: do not add this input to the corpus
   }
   bool finite = true;
-  bool inRange = true; // coordinates beyond ss::LargestCoordinate are refused
+  // Refused: coordinates beyond ss::LargestCoordinate, and distinct points
+  // spanning less than ss::SmallestExtent (measured as fitPolyline does).
+  bool inRange = true;
+  ss::Vec3 lo = ss::Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (const ss::Vec3& p : points)
   {
     finite = finite && p.allFinite();
     inRange = inRange && !(p.cwiseAbs().maxCoeff() > ss::LargestCoordinate);
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
   }
+  const double extent = (0.5 * hi - 0.5 * lo).cwiseAbs().maxCoeff() * 2.0;
+  inRange = inRange && (points.empty() || lo == hi || extent >= ss::SmallestExtent);
 
   checkCleaning(points, options);
 
