@@ -31,6 +31,9 @@
 //                array one tuple short, bit 3 its Tangent array of 2 components
 //
 // FUZZ_FILTERS_VERBOSE=1 prints each decoded input (to describe a reproducer).
+#define FUZZ_TARGET_NAME "fuzz_filters"
+#include "FuzzCheck.h"
+
 #include "ArrayNames.h"
 #include "ShapeAnalysis.h" // MaximumPolygonDeviation
 
@@ -59,7 +62,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -77,27 +79,6 @@ constexpr double Values[16] = { 0.0, 1.0, 0.5, -1.0, 2.0, 4.0, 5.0, 10.0, 100.0,
   -1e300, NaN, Inf, -Inf, 1e-300 };
 constexpr vtkIdType BadIds[8] = { -1, -7, 1000, 100000000, VTK_ID_MAX, VTK_ID_MIN, 0, 0 };
 constexpr const char* PerPointArray = "Values";
-
-[[noreturn]] void fail(const char* format, ...)
-{
-  std::fprintf(stderr, "\nfuzz_filters: INVARIANT FAILED: ");
-  va_list args;
-  va_start(args, format);
-  std::vfprintf(stderr, format, args);
-  va_end(args);
-  std::fprintf(stderr, "\n");
-  std::fflush(stderr);
-  std::abort();
-}
-
-#define CHECK(condition, ...)                                                                      \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      fail(__VA_ARGS__);                                                                           \
-    }                                                                                              \
-  } while (false)
 
 class Reader
 {

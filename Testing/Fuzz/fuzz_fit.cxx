@@ -25,6 +25,9 @@
 // FUZZ_FIT_VERBOSE=1 prints each decoded input (to describe a reproducer).
 // FUZZ_FIT_EXPONENT_LIMIT=N skips inputs with a finite non-zero coordinate outside
 // [2^-N, 2^N] (e.g. N=200, about 1e+-60) to fuzz past known dynamic-range failures.
+#define FUZZ_TARGET_NAME "fuzz_fit"
+#include "FuzzCheck.h"
+
 #include "CubicSpline.h"
 #include "FitPolyline.h"
 #include "GeneralizedCubicSpline.h"
@@ -37,7 +40,6 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
-#include <cstdarg>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -57,27 +59,6 @@ constexpr size_t MaximumPoints = 64;
 // quadrature): 512 samples keep the worst input near 50 ms and still hit the budget.
 constexpr long MaximumSamples = 512;
 constexpr double UnitTolerance = 1e-6;
-
-[[noreturn]] void fail(const char* format, ...)
-{
-  std::fprintf(stderr, "\nfuzz_fit: INVARIANT FAILED: ");
-  va_list args;
-  va_start(args, format);
-  std::vfprintf(stderr, format, args);
-  va_end(args);
-  std::fprintf(stderr, "\n");
-  std::fflush(stderr);
-  std::abort();
-}
-
-#define CHECK(condition, ...)                                                                      \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      fail(__VA_ARGS__);                                                                           \
-    }                                                                                              \
-  } while (false)
 
 bool environmentFlag(const char* name)
 {
@@ -513,12 +494,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   catch (const std::exception& e)
   {
-    fail("fitPolyline threw an unexpected exception (%zu points, finite %d): %s", points.size(),
+    fuzzFail("fitPolyline threw an unexpected exception (%zu points, finite %d): %s", points.size(),
       static_cast<int>(finite), e.what());
   }
   catch (...)
   {
-    fail("fitPolyline threw a non-standard exception");
+    fuzzFail("fitPolyline threw a non-standard exception");
   }
   CHECK(finite && inRange,
     "fitPolyline accepted non-finite or out-of-range input without std::invalid_argument");
@@ -551,7 +532,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   }
   catch (const std::exception& e)
   {
-    fail("sampleFit threw: %s", e.what());
+    fuzzFail("sampleFit threw: %s", e.what());
   }
   const ss::CurveSamples& samples = sampled.Samples;
   const int count = samples.size();
