@@ -567,100 +567,111 @@ CsvColumns HeaderlessColumns(size_t count, const std::string& lineColumn, const 
   return columns;
 }
 
-vtkSmartPointer<vtkPolyData> ReadCsv(
-  std::istream& file, const std::string& name, const std::string& lineColumn)
+/// A CSV row as text: UTF-16 refused, a UTF-8 byte order mark and a CR line end dropped.
+void CleanRow(std::string& row, int number, const std::string& where)
 {
-  CsvColumns columns;
-  char separator = ',';
-  bool first = true;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> rowLineIds; ///< the line id of each row, when a column holds them
-  std::string row;
-  std::vector<double> tuple;
-  for (int number = 1; std::getline(file, row); ++number)
+  if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
   {
-    const std::string where = name + ":" + std::to_string(number) + ": ";
-    if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
-    {
-      throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
-    }
-    if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
-    {
-      row.erase(0, 3); // the UTF-8 byte order mark some editors write
-    }
-    if (!row.empty() && row.back() == '\r')
-    {
-      row.pop_back();
-    }
-    if (first)
-    {
-      separator = Separator(row);
-    }
-    const std::vector<std::string> fields = Fields(row, separator, where);
-    if (fields.size() == 1 && fields[0].empty())
-    {
-      continue;
-    }
-    double value;
-    if (first)
-    {
-      first = false;
-      if (!ParseNumber(fields[0], value))
-      {
-        columns = HeaderColumns(fields, lineColumn, where);
-        continue;
-      }
-      columns = HeaderlessColumns(fields.size(), lineColumn, where);
-    }
-    if (fields.size() != columns.Names.size())
-    {
-      throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
-        " fields, " + (columns.Header ? "the header names " : "the first row has ") +
-        std::to_string(columns.Names.size()));
-    }
-    const auto numberAt = [&](size_t column) {
-      double parsed;
-      if (!ParseNumber(fields[column], parsed))
-      {
-        const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
-        throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
-          columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
-          (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
-      }
-      return parsed;
-    };
-    const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
-      numberAt(columns.Position[2]) };
-    for (auto& [array, column] : columns.Arrays)
-    {
-      tuple.resize(array->GetNumberOfComponents());
-      for (size_t c = 0; c < tuple.size(); ++c)
-      {
-        tuple[c] = numberAt(column + c);
-      }
-      array->InsertNextTuple(tuple.data());
-    }
-    if (columns.LineId >= 0)
-    {
-      const double id = numberAt(columns.LineId);
-      if (!std::isfinite(id))
-      {
-        throw std::runtime_error(
-          where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
-      }
-      rowLineIds->InsertNextValue(id);
-    }
-    points->InsertNextPoint(xyz);
+    throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
   }
+  if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
+  {
+    row.erase(0, 3); // the UTF-8 byte order mark some editors write
+  }
+  if (!row.empty() && row.back() == '\r')
+  {
+    row.pop_back();
+  }
+}
+
+/// The points of a CSV's rows so far, with each row's line id when a column holds them.
+struct CsvRows
+{
+  CsvRows() { this->Points->SetDataTypeToDouble(); }
+
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkDoubleArray> LineIds;
+};
+
+/// Appends a data row: its point, its values of the point arrays and its line id.
+void AppendCsvRow(const std::vector<std::string>& fields, char separator,
+  const CsvColumns& columns, const std::string& where, CsvRows& rows)
+{
+  if (fields.size() != columns.Names.size())
+  {
+    throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
+      " fields, " + (columns.Header ? "the header names " : "the first row has ") +
+      std::to_string(columns.Names.size()));
+  }
+  const auto numberAt = [&](size_t column) {
+    double parsed;
+    if (!ParseNumber(fields[column], parsed))
+    {
+      const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
+      throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
+        columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
+        (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
+    }
+    return parsed;
+  };
+  const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
+    numberAt(columns.Position[2]) };
+  std::vector<double> tuple;
+  for (const auto& [array, column] : columns.Arrays)
+  {
+    tuple.resize(array->GetNumberOfComponents());
+    for (size_t c = 0; c < tuple.size(); ++c)
+    {
+      tuple[c] = numberAt(column + c);
+    }
+    array->InsertNextTuple(tuple.data());
+  }
+  if (columns.LineId >= 0)
+  {
+    const double id = numberAt(columns.LineId);
+    if (!std::isfinite(id))
+    {
+      throw std::runtime_error(
+        where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
+    }
+    rows.LineIds->InsertNextValue(id);
+  }
+  rows.Points->InsertNextPoint(xyz);
+}
+
+/// A column taken for line ids by its name or place that gives every row its own
+/// line numbers points or times, not lines: nothing could be fitted.
+void CheckGuessedLineIds(
+  const CsvColumns& columns, vtkIdType rows, vtkIdType lines, const std::string& name)
+{
+  if (!columns.LineIdGuessed || rows <= 1 || lines != rows)
+  {
+    return;
+  }
+  const std::string column = columns.Names[columns.LineId];
+  throw std::runtime_error(name + ": " +
+    (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
+    ", read as line ids, gives each of its " + std::to_string(rows) +
+    " rows a line of its own: " +
+    (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
+                      "arrays), or name the line id column with --line-column"
+                    : "if it is not a line id, add a header row naming the columns, e.g. "
+                      "x,y,z,time"));
+}
+
+/// The poly data of a CSV's rows: a line per line id, the ids as cell array LineId,
+/// the other columns as point arrays.
+vtkSmartPointer<vtkPolyData> CsvPolyData(
+  const CsvColumns& columns, const CsvRows& rows, const std::string& name)
+{
   // The rows of a line need not be consecutive (tracks interleaved by time):
   // grouped as the filters' Connect Points groups points.
-  const vtkIdType rows = points->GetNumberOfPoints();
-  vtkDataArray* idOfRow = columns.LineId >= 0 ? rowLineIds.Get() : nullptr;
+  const vtkIdType rowCount = rows.Points->GetNumberOfPoints();
+  vtkDataArray* idOfRow = columns.LineId >= 0 ? rows.LineIds.Get() : nullptr;
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkDoubleArray> lineIds;
   lineIds->SetName(names::LineId);
-  for (const auto& line : shapesplines::connectedPoints(rows, idOfRow))
+  for (const auto& line : shapesplines::connectedPoints(rowCount, idOfRow))
   {
     lines->InsertNextCell(static_cast<vtkIdType>(line.PointIds.size()), line.PointIds.data());
     if (idOfRow)
@@ -668,22 +679,9 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
       lineIds->InsertNextValue(idOfRow->GetComponent(line.PointIds[0], 0));
     }
   }
-  // A column taken for line ids by its name or place that gives every row its own
-  // line numbers points or times, not lines: nothing could be fitted.
-  if (columns.LineIdGuessed && rows > 1 && lines->GetNumberOfCells() == rows)
-  {
-    const std::string column = columns.Names[columns.LineId];
-    throw std::runtime_error(name + ": " +
-      (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
-      ", read as line ids, gives each of its " + std::to_string(rows) +
-      " rows a line of its own: " +
-      (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
-                        "arrays), or name the line id column with --line-column"
-                      : "if it is not a line id, add a header row naming the columns, e.g. "
-                        "x,y,z,time"));
-  }
+  CheckGuessedLineIds(columns, rowCount, lines->GetNumberOfCells(), name);
   auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
+  data->SetPoints(rows.Points);
   data->SetLines(lines);
   if (columns.LineId >= 0)
   {
@@ -694,6 +692,43 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
     data->GetPointData()->AddArray(column.first);
   }
   return data;
+}
+
+vtkSmartPointer<vtkPolyData> ReadCsv(
+  std::istream& file, const std::string& name, const std::string& lineColumn)
+{
+  CsvColumns columns;
+  CsvRows rows;
+  char separator = ',';
+  bool first = true; ///< no row with fields read yet: the next is the header or first row
+  std::string row;
+  for (int number = 1; std::getline(file, row); ++number)
+  {
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    CleanRow(row, number, where);
+    if (first)
+    {
+      separator = Separator(row);
+    }
+    const std::vector<std::string> fields = Fields(row, separator, where);
+    if (fields.size() == 1 && fields[0].empty())
+    {
+      continue;
+    }
+    if (first)
+    {
+      first = false;
+      double value;
+      if (!ParseNumber(fields[0], value))
+      {
+        columns = HeaderColumns(fields, lineColumn, where);
+        continue;
+      }
+      columns = HeaderlessColumns(fields.size(), lineColumn, where);
+    }
+    AppendCsvRow(fields, separator, columns, where, rows);
+  }
+  return CsvPolyData(columns, rows, name);
 }
 
 /// The format of what stdin holds: VTK XML or legacy VTK by their first words, else CSV.
