@@ -1164,114 +1164,114 @@ std::string DataProblem(vtkPolyData* data, const vtkIdType* ids, vtkIdType n)
 
 // --------------------------------------------------------------------------- commands
 
-/// The spline families: each makes its configured filter from the options.
-using FamilyFactory = std::function<vtkSmartPointer<vtkShapeSplineFilter>(Arguments&)>;
-
-std::map<std::string, FamilyFactory> Families()
+/// The value of the choice option --option, fallback when not given; a name not among
+/// choices is a usage error listing them, and saying for which family when another
+/// family's list differs.
+int Choice(Arguments& args, const std::string& option, const std::string& fallback,
+  const std::vector<std::pair<std::string, int>>& choices, const std::string& family = "")
 {
-  return { { "cubic", [](Arguments& args) {
-              auto filter = vtkSmartPointer<vtkCubicSplineFilter>::New();
-              const std::string ends = args.Value("end-condition", "not-a-knot");
-              const std::map<std::string, int> names = { { "natural",
-                                                           vtkCubicSplineFilter::NATURAL },
-                { "not-a-knot", vtkCubicSplineFilter::NOT_A_KNOT },
-                { "clamped", vtkCubicSplineFilter::CLAMPED } };
-              if (!names.count(ends))
-              {
-                throw UsageError("--end-condition must be natural, not-a-knot or clamped");
-              }
-              filter->SetEndCondition(names.at(ends));
-              return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-            } },
-    { "gencubic", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
-       const std::string kind = args.Value("kind", "exponential");
-       const std::map<std::string, int> kinds = { { "polynomial",
-                                                    vtkGeneralizedCubicSplineFilter::POLYNOMIAL },
-         { "exponential", vtkGeneralizedCubicSplineFilter::EXPONENTIAL },
-         { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
-         { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } };
-       if (!kinds.count(kind))
-       {
-         throw UsageError("--kind must be polynomial, exponential, trigonometric or variable-degree");
-       }
-       filter->SetSpaceKind(kinds.at(kind));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
-       filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "quintic", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
-       const std::string continuity = args.Value("continuity", "c4");
-       if (continuity != "c3" && continuity != "c4")
-       {
-         throw UsageError("--continuity must be c3 or c4");
-       }
-       filter->SetContinuity(continuity == "c3" ? vtkTensionQuinticSplineFilter::C3
-                                                : vtkTensionQuinticSplineFilter::C4);
-       const std::string mode = args.Value("mode", "interpolate");
-       if (mode != "interpolate" && mode != "approximate")
-       {
-         throw UsageError("--mode must be interpolate or approximate");
-       }
-       filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
-                                             : vtkTensionQuinticSplineFilter::INTERPOLATE);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
-       filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "vdps", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
-       const std::map<std::string, int> modes = { { "interpolate",
-                                                    vtkVariableDegreeSplineFilter::INTERPOLATE },
-         { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
-         { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
-         { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } };
-       const std::string mode = args.Value("mode", "interpolate");
-       if (!modes.count(mode))
-       {
-         throw UsageError(
-           "--mode must be interpolate, approximate, approximate-global or approximate-local");
-       }
-       filter->SetMode(modes.at(mode));
-       const std::string ends = args.Value("end-condition", "natural");
-       if (ends != "natural" && ends != "clamped")
-       {
-         throw UsageError("--end-condition must be natural or clamped for vdps");
-       }
-       filter->SetEndCondition(ends == "clamped" ? vtkVariableDegreeSplineFilter::CLAMPED
-                                                 : vtkVariableDegreeSplineFilter::NATURAL);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
-       filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
-       filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "qqr", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
-       const std::string mode = args.Value("mode", "interpolate");
-       if (mode != "interpolate" && mode != "approximate")
-       {
-         throw UsageError("--mode must be interpolate or approximate for qqr");
-       }
-       filter->SetMode(mode == "approximate" ? vtkQQRSplineFilter::APPROXIMATE
-                                             : vtkQQRSplineFilter::INTERPOLATE);
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
-       filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
-       filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
-       if (args.Flag("z"))
-       {
-         filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
-         filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
-       }
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } } };
+  const std::string value = args.Value(option, fallback);
+  const auto chosen = std::find_if(
+    choices.begin(), choices.end(), [&](const auto& choice) { return choice.first == value; });
+  if (chosen != choices.end())
+  {
+    return chosen->second;
+  }
+  std::string names;
+  for (size_t i = 0; i < choices.size(); ++i)
+  {
+    names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
+  }
+  throw UsageError(
+    "--" + option + " must be " + names + (family.empty() ? "" : " for " + family));
 }
+
+// Each family's filter, configured from its options; the options are read in a fixed
+// order, so that of two bad options the same one is reported.
+
+vtkSmartPointer<vtkShapeSplineFilter> CubicFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkCubicSplineFilter>::New();
+  filter->SetEndCondition(Choice(args, "end-condition", "not-a-knot",
+    { { "natural", vtkCubicSplineFilter::NATURAL },
+      { "not-a-knot", vtkCubicSplineFilter::NOT_A_KNOT },
+      { "clamped", vtkCubicSplineFilter::CLAMPED } }));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> GeneralizedCubicFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
+  filter->SetSpaceKind(Choice(args, "kind", "exponential",
+    { { "polynomial", vtkGeneralizedCubicSplineFilter::POLYNOMIAL },
+      { "exponential", vtkGeneralizedCubicSplineFilter::EXPONENTIAL },
+      { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
+      { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } }));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
+  filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> TensionQuinticFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+  filter->SetContinuity(Choice(args, "continuity", "c4",
+    { { "c3", vtkTensionQuinticSplineFilter::C3 }, { "c4", vtkTensionQuinticSplineFilter::C4 } }));
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkTensionQuinticSplineFilter::INTERPOLATE },
+      { "approximate", vtkTensionQuinticSplineFilter::APPROXIMATE } }));
+  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
+  filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> VariableDegreeFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkVariableDegreeSplineFilter::INTERPOLATE },
+      { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
+      { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
+      { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } }));
+  filter->SetEndCondition(Choice(args, "end-condition", "natural",
+    { { "natural", vtkVariableDegreeSplineFilter::NATURAL },
+      { "clamped", vtkVariableDegreeSplineFilter::CLAMPED } },
+    "vdps"));
+  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
+  filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
+  filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> QQRFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkQQRSplineFilter::INTERPOLATE },
+      { "approximate", vtkQQRSplineFilter::APPROXIMATE } },
+    "qqr"));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
+  filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
+  filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
+  if (args.Flag("z"))
+  {
+    filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
+    filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
+  }
+  return filter;
+}
+
+/// The spline families by their --family names.
+using FamilyFactory = vtkSmartPointer<vtkShapeSplineFilter> (*)(Arguments&);
+const std::map<std::string, FamilyFactory> Families = { { "cubic", CubicFilter },
+  { "gencubic", GeneralizedCubicFilter }, { "quintic", TensionQuinticFilter },
+  { "vdps", VariableDegreeFilter }, { "qqr", QQRFilter } };
 
 int Fit(Arguments& args)
 {
@@ -1286,24 +1286,17 @@ int Fit(Arguments& args)
     throw UsageError("fit needs -o OUTPUT");
   }
   CheckNotAnInput(output, { input });
-  const auto families = Families();
   const std::string familyName = args.Value("family", "cubic");
-  if (!families.count(familyName))
+  if (!Families.count(familyName))
   {
     throw UsageError("unknown --family " + familyName);
   }
-  vtkSmartPointer<vtkShapeSplineFilter> filter = families.at(familyName)(args);
+  vtkSmartPointer<vtkShapeSplineFilter> filter = Families.at(familyName)(args);
 
-  const std::map<std::string, int> parameterizations = { { "uniform",
-                                                           vtkShapeSplineFilter::UNIFORM },
-    { "chord", vtkShapeSplineFilter::CHORD_LENGTH },
-    { "centripetal", vtkShapeSplineFilter::CENTRIPETAL } };
-  const std::string parameterization = args.Value("parameterization", "chord");
-  if (!parameterizations.count(parameterization))
-  {
-    throw UsageError("--parameterization must be chord, centripetal or uniform");
-  }
-  filter->SetParameterization(parameterizations.at(parameterization));
+  filter->SetParameterization(Choice(args, "parameterization", "chord",
+    { { "chord", vtkShapeSplineFilter::CHORD_LENGTH },
+      { "centripetal", vtkShapeSplineFilter::CENTRIPETAL },
+      { "uniform", vtkShapeSplineFilter::UNIFORM } }));
   filter->SetCorrectParameters(!args.Flag("keep-parameters"));
   filter->SetClosed(args.Flag("closed"));
   filter->SetVMTKArrayNames(args.Flag("vmtk-names"));
