@@ -1351,6 +1351,168 @@ int Fit(Arguments& args)
   return messages.Errors > 0 ? 2 : 0;
 }
 
+/// Reads CURVE for audit: a curve written by fit, with a line per line of INPUT's data.
+vtkSmartPointer<vtkPolyData> ReadFittedCurve(
+  const std::string& path, const std::string& input, vtkPolyData* data)
+{
+  vtkSmartPointer<vtkPolyData> curve = Read(path);
+  for (const char* name :
+    { names::SpanIndex, names::Tangent, names::Binormal, names::Curvature, names::Torsion })
+  {
+    if (!curve->GetPointData()->GetArray(name))
+    {
+      throw std::runtime_error(InputName(path) + " has no point array " + name +
+        ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
+    }
+  }
+  // Lines are paired in order: with a line more or less every pair is wrong.
+  if (curve->GetNumberOfLines() != data->GetNumberOfLines())
+  {
+    std::ostringstream message;
+    message << "CURVE " << InputName(path) << " does not match INPUT " << InputName(input)
+            << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
+            << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
+            << "fitted to; a fit that skipped lines wrote fewer)";
+    throw std::runtime_error(message.str());
+  }
+  return curve;
+}
+
+/// The analysis' point arrays of the data's discrete shape, summarized line by line.
+struct DiscreteShape
+{
+  explicit DiscreteShape(vtkPolyData* result)
+    : Curvature(result->GetPointData()->GetArray(names::DiscreteCurvature))
+    , Torsion(result->GetPointData()->GetArray(names::DiscreteTorsion))
+    , Collinear(result->GetPointData()->GetArray(names::Collinear))
+    , Coplanar(result->GetPointData()->GetArray(names::Coplanar))
+  {
+  }
+
+  void Summarize(const vtkIdType* ids, vtkIdType n, std::ostream& summary) const
+  {
+    // The segments at an open line's ends have no discrete torsion: 0 there, and
+    // not coplanar; a coplanar segment's 0 is the data's.
+    const auto definedTorsion = [&](vtkIdType id) {
+      return this->Torsion->GetComponent(id, 0) != 0.0 ||
+        this->Coplanar->GetComponent(id, 0) != 0.0;
+    };
+    double maxCurvature = 0.0;
+    int collinearCount = 0;
+    int coplanarCount = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      maxCurvature = std::max(maxCurvature, this->Curvature->GetComponent(ids[k], 0));
+      collinearCount += this->Collinear->GetComponent(ids[k], 0) != 0.0;
+      coplanarCount += this->Coplanar->GetComponent(ids[k], 0) != 0.0;
+    }
+    summary << n << " points, max discrete curvature " << maxCurvature << ", discrete torsion "
+            << RangeText(this->Torsion, ids, n, definedTorsion) << ", " << collinearCount
+            << " collinear points, " << coplanarCount << " coplanar segments";
+  }
+
+  vtkDataArray* Curvature;
+  vtkDataArray* Torsion;
+  vtkDataArray* Collinear;
+  vtkDataArray* Coplanar;
+};
+
+/// An audited curve's counts in the written samples, per criterion, and fit's count.
+void SummarizeCurveAudit(
+  vtkPolyData* result, vtkPolyData* curve, vtkIdType line, std::ostream& summary)
+{
+  const auto& criterionCount = names::CriterionViolations;
+  summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
+          << " shape violations in the written samples (collinearity "
+          << CellValue(result, criterionCount[0], line) << ", convexity "
+          << CellValue(result, criterionCount[1], line) << "+"
+          << CellValue(result, criterionCount[2], line) << ", coplanarity "
+          << CellValue(result, criterionCount[3], line) << ", torsion sign "
+          << CellValue(result, criterionCount[4], line) << "+"
+          << CellValue(result, criterionCount[5], line) << ")";
+  // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
+  if (curve->GetCellData()->GetArray(names::ShapeViolations))
+  {
+    summary << "; fit's audit: " << CellValue(curve, names::ShapeViolations, line);
+  }
+}
+
+/// The lines whose curve audit could not check though their data are fine.
+struct UnauditedCurves
+{
+  std::vector<std::string> Unmatched;      ///< spans or closure differ from the data's
+  std::vector<std::string> Approximations; ///< knots that are not the data points
+};
+
+/// A line per line of the analysis' output: the data's discrete shape and, with a
+/// CURVE, its audit or why it was not audited.
+UnauditedCurves SummarizeAudit(vtkPolyData* result, vtkPolyData* curve, std::ostream& summary)
+{
+  const DiscreteShape shape(result);
+  UnauditedCurves unaudited;
+  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const std::string problem = DataProblem(result, ids, n);
+    summary << LineName(result, line) << ": ";
+    if (problem == OutOfRange)
+    {
+      summary << "skipped (" << problem << ")\n";
+      continue;
+    }
+    shape.Summarize(ids, n, summary);
+    if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
+    {
+      SummarizeCurveAudit(result, curve, line, summary);
+    }
+    else if (curve)
+    {
+      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
+      // approximation's knots are not the data points (its NoiseLevel is the distance).
+      const bool approximation = CellValue(curve, names::NoiseLevel, line) > 0.0;
+      const std::string why = !result->GetCellData()->GetArray(names::ShapeViolations)
+        ? "INPUT has cells other than lines: no counts per line"
+        : !problem.empty() ? problem
+        : approximation    ? "it approximates the data: its knots are not the data points"
+                           : "it does not match the data";
+      summary << "; curve: not audited (" << why << ")";
+      if (problem.empty())
+      {
+        auto& lines = approximation ? unaudited.Approximations : unaudited.Unmatched;
+        lines.push_back(LineName(result, line));
+      }
+    }
+    summary << "\n";
+  }
+  return unaudited;
+}
+
+/// A curve audit could not check is an error: it was not fitted to these data, or
+/// it approximates them (fit audits that against its reference polygon).
+void CheckAudited(
+  const UnauditedCurves& unaudited, const std::string& curvePath, const std::string& input)
+{
+  if (!unaudited.Unmatched.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(curvePath) + " does not match INPUT " +
+      InputName(input) + " (" + Join(unaudited.Unmatched) +
+      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
+      "with the data it was fitted to, and the same --closed (a curve that approximates the "
+      "data is audited by fit alone)");
+  }
+  if (!unaudited.Approximations.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(curvePath) + " approximates INPUT " +
+      InputName(input) + " (" + Join(unaudited.Approximations) +
+      "): audit checks a curve through the data points; fit audited the approximation against "
+      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
+  }
+}
+
 int Audit(Arguments& args)
 {
   if (args.Positional.empty() || args.Positional.size() > 2)
@@ -1379,126 +1541,23 @@ int Audit(Arguments& args)
   }
 
   const std::string input = args.Positional[0];
+  const std::string curvePath = args.Positional.size() == 2 ? args.Positional[1] : "";
   vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
   analysis->SetInputData(0, data);
   vtkSmartPointer<vtkPolyData> curve;
   if (args.Positional.size() == 2)
   {
-    curve = Read(args.Positional[1]);
-    for (const char* name :
-      { names::SpanIndex, names::Tangent, names::Binormal, names::Curvature, names::Torsion })
-    {
-      if (!curve->GetPointData()->GetArray(name))
-      {
-        throw std::runtime_error(InputName(args.Positional[1]) + " has no point array " + name +
-          ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
-      }
-    }
-    // Lines are paired in order: with a line more or less every pair is wrong.
-    if (curve->GetNumberOfLines() != data->GetNumberOfLines())
-    {
-      std::ostringstream message;
-      message << "CURVE " << InputName(args.Positional[1]) << " does not match INPUT "
-              << InputName(input) << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
-              << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
-              << "fitted to; a fit that skipped lines wrote fewer)";
-      throw std::runtime_error(message.str());
-    }
+    curve = ReadFittedCurve(curvePath, input, data);
     analysis->SetInputData(1, curve);
   }
   MessageCounter messages({ analysis });
   analysis->Update();
   vtkPolyData* result = analysis->GetOutput();
-  vtkDataArray* curvature = result->GetPointData()->GetArray(names::DiscreteCurvature);
-  vtkDataArray* torsion = result->GetPointData()->GetArray(names::DiscreteTorsion);
-  vtkDataArray* collinear = result->GetPointData()->GetArray(names::Collinear);
-  vtkDataArray* coplanar = result->GetPointData()->GetArray(names::Coplanar);
-  // The segments at an open line's ends have no discrete torsion: 0 there, and
-  // not coplanar; a coplanar segment's 0 is the data's.
-  const auto definedTorsion = [&](vtkIdType id) {
-    return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
-  };
+
   std::ostream silent(nullptr);
   // With the result on stdout, the summary goes to stderr.
   std::ostream& summary = quiet ? silent : output == "-" ? std::cerr : std::cout;
-  std::vector<std::string> unmatched;
-  std::vector<std::string> approximations;
-  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
-  vtkIdType line = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const std::string problem = DataProblem(result, ids, n);
-    if (problem == OutOfRange)
-    {
-      summary << LineName(result, line) << ": skipped (" << problem << ")\n";
-      continue;
-    }
-    double maxCurvature = 0.0;
-    int collinearCount = 0;
-    int coplanarCount = 0;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-      collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
-      coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
-    }
-    summary << LineName(result, line) << ": " << n << " points, max discrete curvature "
-            << maxCurvature << ", discrete torsion " << RangeText(torsion, ids, n, definedTorsion)
-            << ", " << collinearCount << " collinear points, " << coplanarCount
-            << " coplanar segments";
-    if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
-    {
-      const auto& criterionCount = names::CriterionViolations;
-      summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
-              << " shape violations in the written samples (collinearity "
-              << CellValue(result, criterionCount[0], line) << ", convexity "
-              << CellValue(result, criterionCount[1], line) << "+"
-              << CellValue(result, criterionCount[2], line) << ", coplanarity "
-              << CellValue(result, criterionCount[3], line) << ", torsion sign "
-              << CellValue(result, criterionCount[4], line) << "+"
-              << CellValue(result, criterionCount[5], line) << ")";
-      // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
-      if (curve->GetCellData()->GetArray(names::ShapeViolations))
-      {
-        summary << "; fit's audit: " << CellValue(curve, names::ShapeViolations, line);
-      }
-    }
-    else if (curve)
-    {
-      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
-      // approximation's knots are not the data points (its NoiseLevel is the distance).
-      const bool approximation = CellValue(curve, names::NoiseLevel, line) > 0.0;
-      const std::string why = !result->GetCellData()->GetArray(names::ShapeViolations)
-        ? "INPUT has cells other than lines: no counts per line"
-        : !problem.empty() ? problem
-        : approximation    ? "it approximates the data: its knots are not the data points"
-                           : "it does not match the data";
-      summary << "; curve: not audited (" << why << ")";
-      if (problem.empty())
-      {
-        (approximation ? approximations : unmatched).push_back(LineName(result, line));
-      }
-    }
-    summary << "\n";
-  }
-  if (!unmatched.empty())
-  {
-    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " does not match INPUT " +
-      InputName(input) + " (" + Join(unmatched) +
-      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
-      "with the data it was fitted to, and the same --closed (a curve that approximates the "
-      "data is audited by fit alone)");
-  }
-  if (!approximations.empty())
-  {
-    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " approximates INPUT " +
-      InputName(input) + " (" + Join(approximations) +
-      "): audit checks a curve through the data points; fit audited the approximation against "
-      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
-  }
+  CheckAudited(SummarizeAudit(result, curve, summary), curvePath, input);
   if (!output.empty())
   {
     Write(result, output);
