@@ -567,100 +567,111 @@ CsvColumns HeaderlessColumns(size_t count, const std::string& lineColumn, const 
   return columns;
 }
 
-vtkSmartPointer<vtkPolyData> ReadCsv(
-  std::istream& file, const std::string& name, const std::string& lineColumn)
+/// A CSV row as text: UTF-16 refused, a UTF-8 byte order mark and a CR line end dropped.
+void CleanRow(std::string& row, int number, const std::string& where)
 {
-  CsvColumns columns;
-  char separator = ',';
-  bool first = true;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> rowLineIds; ///< the line id of each row, when a column holds them
-  std::string row;
-  std::vector<double> tuple;
-  for (int number = 1; std::getline(file, row); ++number)
+  if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
   {
-    const std::string where = name + ":" + std::to_string(number) + ": ";
-    if (number == 1 && (row.rfind("\xFF\xFE", 0) == 0 || row.rfind("\xFE\xFF", 0) == 0))
-    {
-      throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
-    }
-    if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
-    {
-      row.erase(0, 3); // the UTF-8 byte order mark some editors write
-    }
-    if (!row.empty() && row.back() == '\r')
-    {
-      row.pop_back();
-    }
-    if (first)
-    {
-      separator = Separator(row);
-    }
-    const std::vector<std::string> fields = Fields(row, separator, where);
-    if (fields.size() == 1 && fields[0].empty())
-    {
-      continue;
-    }
-    double value;
-    if (first)
-    {
-      first = false;
-      if (!ParseNumber(fields[0], value))
-      {
-        columns = HeaderColumns(fields, lineColumn, where);
-        continue;
-      }
-      columns = HeaderlessColumns(fields.size(), lineColumn, where);
-    }
-    if (fields.size() != columns.Names.size())
-    {
-      throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
-        " fields, " + (columns.Header ? "the header names " : "the first row has ") +
-        std::to_string(columns.Names.size()));
-    }
-    const auto numberAt = [&](size_t column) {
-      double parsed;
-      if (!ParseNumber(fields[column], parsed))
-      {
-        const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
-        throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
-          columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
-          (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
-      }
-      return parsed;
-    };
-    const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
-      numberAt(columns.Position[2]) };
-    for (auto& [array, column] : columns.Arrays)
-    {
-      tuple.resize(array->GetNumberOfComponents());
-      for (size_t c = 0; c < tuple.size(); ++c)
-      {
-        tuple[c] = numberAt(column + c);
-      }
-      array->InsertNextTuple(tuple.data());
-    }
-    if (columns.LineId >= 0)
-    {
-      const double id = numberAt(columns.LineId);
-      if (!std::isfinite(id))
-      {
-        throw std::runtime_error(
-          where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
-      }
-      rowLineIds->InsertNextValue(id);
-    }
-    points->InsertNextPoint(xyz);
+    throw std::runtime_error(where + "the text is UTF-16: save the CSV as UTF-8");
   }
+  if (number == 1 && row.rfind("\xEF\xBB\xBF", 0) == 0)
+  {
+    row.erase(0, 3); // the UTF-8 byte order mark some editors write
+  }
+  if (!row.empty() && row.back() == '\r')
+  {
+    row.pop_back();
+  }
+}
+
+/// The points of a CSV's rows so far, with each row's line id when a column holds them.
+struct CsvRows
+{
+  CsvRows() { this->Points->SetDataTypeToDouble(); }
+
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkDoubleArray> LineIds;
+};
+
+/// Appends a data row: its point, its values of the point arrays and its line id.
+void AppendCsvRow(const std::vector<std::string>& fields, char separator,
+  const CsvColumns& columns, const std::string& where, CsvRows& rows)
+{
+  if (fields.size() != columns.Names.size())
+  {
+    throw std::runtime_error(where + "this row has " + std::to_string(fields.size()) +
+      " fields, " + (columns.Header ? "the header names " : "the first row has ") +
+      std::to_string(columns.Names.size()));
+  }
+  const auto numberAt = [&](size_t column) {
+    double parsed;
+    if (!ParseNumber(fields[column], parsed))
+    {
+      const bool decimalComma = separator != ',' && fields[column].find(',') != std::string::npos;
+      throw std::runtime_error(where + "column " + std::to_string(column + 1) + " (" +
+        columns.Names[column] + ") is not a number: '" + fields[column] + "'" +
+        (decimalComma ? " (decimal commas are not read: write 1.5, not 1,5)" : ""));
+    }
+    return parsed;
+  };
+  const double xyz[3] = { numberAt(columns.Position[0]), numberAt(columns.Position[1]),
+    numberAt(columns.Position[2]) };
+  std::vector<double> tuple;
+  for (const auto& [array, column] : columns.Arrays)
+  {
+    tuple.resize(array->GetNumberOfComponents());
+    for (size_t c = 0; c < tuple.size(); ++c)
+    {
+      tuple[c] = numberAt(column + c);
+    }
+    array->InsertNextTuple(tuple.data());
+  }
+  if (columns.LineId >= 0)
+  {
+    const double id = numberAt(columns.LineId);
+    if (!std::isfinite(id))
+    {
+      throw std::runtime_error(
+        where + "line id " + fields[columns.LineId] + ": line ids must be finite numbers");
+    }
+    rows.LineIds->InsertNextValue(id);
+  }
+  rows.Points->InsertNextPoint(xyz);
+}
+
+/// A column taken for line ids by its name or place that gives every row its own
+/// line numbers points or times, not lines: nothing could be fitted.
+void CheckGuessedLineIds(
+  const CsvColumns& columns, vtkIdType rows, vtkIdType lines, const std::string& name)
+{
+  if (!columns.LineIdGuessed || rows <= 1 || lines != rows)
+  {
+    return;
+  }
+  const std::string column = columns.Names[columns.LineId];
+  throw std::runtime_error(name + ": " +
+    (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
+    ", read as line ids, gives each of its " + std::to_string(rows) +
+    " rows a line of its own: " +
+    (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
+                      "arrays), or name the line id column with --line-column"
+                    : "if it is not a line id, add a header row naming the columns, e.g. "
+                      "x,y,z,time"));
+}
+
+/// The poly data of a CSV's rows: a line per line id, the ids as cell array LineId,
+/// the other columns as point arrays.
+vtkSmartPointer<vtkPolyData> CsvPolyData(
+  const CsvColumns& columns, const CsvRows& rows, const std::string& name)
+{
   // The rows of a line need not be consecutive (tracks interleaved by time):
   // grouped as the filters' Connect Points groups points.
-  const vtkIdType rows = points->GetNumberOfPoints();
-  vtkDataArray* idOfRow = columns.LineId >= 0 ? rowLineIds.Get() : nullptr;
+  const vtkIdType rowCount = rows.Points->GetNumberOfPoints();
+  vtkDataArray* idOfRow = columns.LineId >= 0 ? rows.LineIds.Get() : nullptr;
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkDoubleArray> lineIds;
   lineIds->SetName(names::LineId);
-  for (const auto& line : shapesplines::connectedPoints(rows, idOfRow))
+  for (const auto& line : shapesplines::connectedPoints(rowCount, idOfRow))
   {
     lines->InsertNextCell(static_cast<vtkIdType>(line.PointIds.size()), line.PointIds.data());
     if (idOfRow)
@@ -668,22 +679,9 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
       lineIds->InsertNextValue(idOfRow->GetComponent(line.PointIds[0], 0));
     }
   }
-  // A column taken for line ids by its name or place that gives every row its own
-  // line numbers points or times, not lines: nothing could be fitted.
-  if (columns.LineIdGuessed && rows > 1 && lines->GetNumberOfCells() == rows)
-  {
-    const std::string column = columns.Names[columns.LineId];
-    throw std::runtime_error(name + ": " +
-      (columns.Header ? "the column '" + column + "'" : "column 4 of a CSV without a header") +
-      ", read as line ids, gives each of its " + std::to_string(rows) +
-      " rows a line of its own: " +
-      (columns.Header ? "if it numbers points, not lines, rename it (other names become point "
-                        "arrays), or name the line id column with --line-column"
-                      : "if it is not a line id, add a header row naming the columns, e.g. "
-                        "x,y,z,time"));
-  }
+  CheckGuessedLineIds(columns, rowCount, lines->GetNumberOfCells(), name);
   auto data = vtkSmartPointer<vtkPolyData>::New();
-  data->SetPoints(points);
+  data->SetPoints(rows.Points);
   data->SetLines(lines);
   if (columns.LineId >= 0)
   {
@@ -694,6 +692,43 @@ vtkSmartPointer<vtkPolyData> ReadCsv(
     data->GetPointData()->AddArray(column.first);
   }
   return data;
+}
+
+vtkSmartPointer<vtkPolyData> ReadCsv(
+  std::istream& file, const std::string& name, const std::string& lineColumn)
+{
+  CsvColumns columns;
+  CsvRows rows;
+  char separator = ',';
+  bool first = true; ///< no row with fields read yet: the next is the header or first row
+  std::string row;
+  for (int number = 1; std::getline(file, row); ++number)
+  {
+    const std::string where = name + ":" + std::to_string(number) + ": ";
+    CleanRow(row, number, where);
+    if (first)
+    {
+      separator = Separator(row);
+    }
+    const std::vector<std::string> fields = Fields(row, separator, where);
+    if (fields.size() == 1 && fields[0].empty())
+    {
+      continue;
+    }
+    if (first)
+    {
+      first = false;
+      double value;
+      if (!ParseNumber(fields[0], value))
+      {
+        columns = HeaderColumns(fields, lineColumn, where);
+        continue;
+      }
+      columns = HeaderlessColumns(fields.size(), lineColumn, where);
+    }
+    AppendCsvRow(fields, separator, columns, where, rows);
+  }
+  return CsvPolyData(columns, rows, name);
 }
 
 /// The format of what stdin holds: VTK XML or legacy VTK by their first words, else CSV.
@@ -1129,114 +1164,114 @@ std::string DataProblem(vtkPolyData* data, const vtkIdType* ids, vtkIdType n)
 
 // --------------------------------------------------------------------------- commands
 
-/// The spline families: each makes its configured filter from the options.
-using FamilyFactory = std::function<vtkSmartPointer<vtkShapeSplineFilter>(Arguments&)>;
-
-std::map<std::string, FamilyFactory> Families()
+/// The value of the choice option --option, fallback when not given; a name not among
+/// choices is a usage error listing them, and saying for which family when another
+/// family's list differs.
+int Choice(Arguments& args, const std::string& option, const std::string& fallback,
+  const std::vector<std::pair<std::string, int>>& choices, const std::string& family = "")
 {
-  return { { "cubic", [](Arguments& args) {
-              auto filter = vtkSmartPointer<vtkCubicSplineFilter>::New();
-              const std::string ends = args.Value("end-condition", "not-a-knot");
-              const std::map<std::string, int> names = { { "natural",
-                                                           vtkCubicSplineFilter::NATURAL },
-                { "not-a-knot", vtkCubicSplineFilter::NOT_A_KNOT },
-                { "clamped", vtkCubicSplineFilter::CLAMPED } };
-              if (!names.count(ends))
-              {
-                throw UsageError("--end-condition must be natural, not-a-knot or clamped");
-              }
-              filter->SetEndCondition(names.at(ends));
-              return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-            } },
-    { "gencubic", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
-       const std::string kind = args.Value("kind", "exponential");
-       const std::map<std::string, int> kinds = { { "polynomial",
-                                                    vtkGeneralizedCubicSplineFilter::POLYNOMIAL },
-         { "exponential", vtkGeneralizedCubicSplineFilter::EXPONENTIAL },
-         { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
-         { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } };
-       if (!kinds.count(kind))
-       {
-         throw UsageError("--kind must be polynomial, exponential, trigonometric or variable-degree");
-       }
-       filter->SetSpaceKind(kinds.at(kind));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
-       filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "quintic", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
-       const std::string continuity = args.Value("continuity", "c4");
-       if (continuity != "c3" && continuity != "c4")
-       {
-         throw UsageError("--continuity must be c3 or c4");
-       }
-       filter->SetContinuity(continuity == "c3" ? vtkTensionQuinticSplineFilter::C3
-                                                : vtkTensionQuinticSplineFilter::C4);
-       const std::string mode = args.Value("mode", "interpolate");
-       if (mode != "interpolate" && mode != "approximate")
-       {
-         throw UsageError("--mode must be interpolate or approximate");
-       }
-       filter->SetMode(mode == "approximate" ? vtkTensionQuinticSplineFilter::APPROXIMATE
-                                             : vtkTensionQuinticSplineFilter::INTERPOLATE);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
-       filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "vdps", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
-       const std::map<std::string, int> modes = { { "interpolate",
-                                                    vtkVariableDegreeSplineFilter::INTERPOLATE },
-         { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
-         { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
-         { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } };
-       const std::string mode = args.Value("mode", "interpolate");
-       if (!modes.count(mode))
-       {
-         throw UsageError(
-           "--mode must be interpolate, approximate, approximate-global or approximate-local");
-       }
-       filter->SetMode(modes.at(mode));
-       const std::string ends = args.Value("end-condition", "natural");
-       if (ends != "natural" && ends != "clamped")
-       {
-         throw UsageError("--end-condition must be natural or clamped for vdps");
-       }
-       filter->SetEndCondition(ends == "clamped" ? vtkVariableDegreeSplineFilter::CLAMPED
-                                                 : vtkVariableDegreeSplineFilter::NATURAL);
-       filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
-       filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
-       filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } },
-    { "qqr", [](Arguments& args) {
-       auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
-       const std::string mode = args.Value("mode", "interpolate");
-       if (mode != "interpolate" && mode != "approximate")
-       {
-         throw UsageError("--mode must be interpolate or approximate for qqr");
-       }
-       filter->SetMode(mode == "approximate" ? vtkQQRSplineFilter::APPROXIMATE
-                                             : vtkQQRSplineFilter::INTERPOLATE);
-       filter->SetAutomatic(!args.Flag("fixed"));
-       filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
-       filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
-       filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
-       if (args.Flag("z"))
-       {
-         filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
-         filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
-       }
-       return vtkSmartPointer<vtkShapeSplineFilter>(filter);
-     } } };
+  const std::string value = args.Value(option, fallback);
+  const auto chosen = std::find_if(
+    choices.begin(), choices.end(), [&](const auto& choice) { return choice.first == value; });
+  if (chosen != choices.end())
+  {
+    return chosen->second;
+  }
+  std::string names;
+  for (size_t i = 0; i < choices.size(); ++i)
+  {
+    names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + choices[i].first;
+  }
+  throw UsageError(
+    "--" + option + " must be " + names + (family.empty() ? "" : " for " + family));
 }
+
+// Each family's filter, configured from its options; the options are read in a fixed
+// order, so that of two bad options the same one is reported.
+
+vtkSmartPointer<vtkShapeSplineFilter> CubicFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkCubicSplineFilter>::New();
+  filter->SetEndCondition(Choice(args, "end-condition", "not-a-knot",
+    { { "natural", vtkCubicSplineFilter::NATURAL },
+      { "not-a-knot", vtkCubicSplineFilter::NOT_A_KNOT },
+      { "clamped", vtkCubicSplineFilter::CLAMPED } }));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> GeneralizedCubicFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkGeneralizedCubicSplineFilter>::New();
+  filter->SetSpaceKind(Choice(args, "kind", "exponential",
+    { { "polynomial", vtkGeneralizedCubicSplineFilter::POLYNOMIAL },
+      { "exponential", vtkGeneralizedCubicSplineFilter::EXPONENTIAL },
+      { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
+      { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } }));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
+  filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> TensionQuinticFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkTensionQuinticSplineFilter>::New();
+  filter->SetContinuity(Choice(args, "continuity", "c4",
+    { { "c3", vtkTensionQuinticSplineFilter::C3 }, { "c4", vtkTensionQuinticSplineFilter::C4 } }));
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkTensionQuinticSplineFilter::INTERPOLATE },
+      { "approximate", vtkTensionQuinticSplineFilter::APPROXIMATE } }));
+  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
+  filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> VariableDegreeFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkVariableDegreeSplineFilter>::New();
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkVariableDegreeSplineFilter::INTERPOLATE },
+      { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
+      { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
+      { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } }));
+  filter->SetEndCondition(Choice(args, "end-condition", "natural",
+    { { "natural", vtkVariableDegreeSplineFilter::NATURAL },
+      { "clamped", vtkVariableDegreeSplineFilter::CLAMPED } },
+    "vdps"));
+  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
+  filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
+  filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
+  return filter;
+}
+
+vtkSmartPointer<vtkShapeSplineFilter> QQRFilter(Arguments& args)
+{
+  auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
+  filter->SetMode(Choice(args, "mode", "interpolate",
+    { { "interpolate", vtkQQRSplineFilter::INTERPOLATE },
+      { "approximate", vtkQQRSplineFilter::APPROXIMATE } },
+    "qqr"));
+  filter->SetAutomatic(!args.Flag("fixed"));
+  filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
+  filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
+  filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
+  if (args.Flag("z"))
+  {
+    filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
+    filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
+  }
+  return filter;
+}
+
+/// The spline families by their --family names.
+using FamilyFactory = vtkSmartPointer<vtkShapeSplineFilter> (*)(Arguments&);
+const std::map<std::string, FamilyFactory> Families = { { "cubic", CubicFilter },
+  { "gencubic", GeneralizedCubicFilter }, { "quintic", TensionQuinticFilter },
+  { "vdps", VariableDegreeFilter }, { "qqr", QQRFilter } };
 
 int Fit(Arguments& args)
 {
@@ -1251,24 +1286,17 @@ int Fit(Arguments& args)
     throw UsageError("fit needs -o OUTPUT");
   }
   CheckNotAnInput(output, { input });
-  const auto families = Families();
   const std::string familyName = args.Value("family", "cubic");
-  if (!families.count(familyName))
+  if (!Families.count(familyName))
   {
     throw UsageError("unknown --family " + familyName);
   }
-  vtkSmartPointer<vtkShapeSplineFilter> filter = families.at(familyName)(args);
+  vtkSmartPointer<vtkShapeSplineFilter> filter = Families.at(familyName)(args);
 
-  const std::map<std::string, int> parameterizations = { { "uniform",
-                                                           vtkShapeSplineFilter::UNIFORM },
-    { "chord", vtkShapeSplineFilter::CHORD_LENGTH },
-    { "centripetal", vtkShapeSplineFilter::CENTRIPETAL } };
-  const std::string parameterization = args.Value("parameterization", "chord");
-  if (!parameterizations.count(parameterization))
-  {
-    throw UsageError("--parameterization must be chord, centripetal or uniform");
-  }
-  filter->SetParameterization(parameterizations.at(parameterization));
+  filter->SetParameterization(Choice(args, "parameterization", "chord",
+    { { "chord", vtkShapeSplineFilter::CHORD_LENGTH },
+      { "centripetal", vtkShapeSplineFilter::CENTRIPETAL },
+      { "uniform", vtkShapeSplineFilter::UNIFORM } }));
   filter->SetCorrectParameters(!args.Flag("keep-parameters"));
   filter->SetClosed(args.Flag("closed"));
   filter->SetVMTKArrayNames(args.Flag("vmtk-names"));
@@ -1323,6 +1351,168 @@ int Fit(Arguments& args)
   return messages.Errors > 0 ? 2 : 0;
 }
 
+/// Reads CURVE for audit: a curve written by fit, with a line per line of INPUT's data.
+vtkSmartPointer<vtkPolyData> ReadFittedCurve(
+  const std::string& path, const std::string& input, vtkPolyData* data)
+{
+  vtkSmartPointer<vtkPolyData> curve = Read(path);
+  for (const char* name :
+    { names::SpanIndex, names::Tangent, names::Binormal, names::Curvature, names::Torsion })
+  {
+    if (!curve->GetPointData()->GetArray(name))
+    {
+      throw std::runtime_error(InputName(path) + " has no point array " + name +
+        ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
+    }
+  }
+  // Lines are paired in order: with a line more or less every pair is wrong.
+  if (curve->GetNumberOfLines() != data->GetNumberOfLines())
+  {
+    std::ostringstream message;
+    message << "CURVE " << InputName(path) << " does not match INPUT " << InputName(input)
+            << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
+            << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
+            << "fitted to; a fit that skipped lines wrote fewer)";
+    throw std::runtime_error(message.str());
+  }
+  return curve;
+}
+
+/// The analysis' point arrays of the data's discrete shape, summarized line by line.
+struct DiscreteShape
+{
+  explicit DiscreteShape(vtkPolyData* result)
+    : Curvature(result->GetPointData()->GetArray(names::DiscreteCurvature))
+    , Torsion(result->GetPointData()->GetArray(names::DiscreteTorsion))
+    , Collinear(result->GetPointData()->GetArray(names::Collinear))
+    , Coplanar(result->GetPointData()->GetArray(names::Coplanar))
+  {
+  }
+
+  void Summarize(const vtkIdType* ids, vtkIdType n, std::ostream& summary) const
+  {
+    // The segments at an open line's ends have no discrete torsion: 0 there, and
+    // not coplanar; a coplanar segment's 0 is the data's.
+    const auto definedTorsion = [&](vtkIdType id) {
+      return this->Torsion->GetComponent(id, 0) != 0.0 ||
+        this->Coplanar->GetComponent(id, 0) != 0.0;
+    };
+    double maxCurvature = 0.0;
+    int collinearCount = 0;
+    int coplanarCount = 0;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      maxCurvature = std::max(maxCurvature, this->Curvature->GetComponent(ids[k], 0));
+      collinearCount += this->Collinear->GetComponent(ids[k], 0) != 0.0;
+      coplanarCount += this->Coplanar->GetComponent(ids[k], 0) != 0.0;
+    }
+    summary << n << " points, max discrete curvature " << maxCurvature << ", discrete torsion "
+            << RangeText(this->Torsion, ids, n, definedTorsion) << ", " << collinearCount
+            << " collinear points, " << coplanarCount << " coplanar segments";
+  }
+
+  vtkDataArray* Curvature;
+  vtkDataArray* Torsion;
+  vtkDataArray* Collinear;
+  vtkDataArray* Coplanar;
+};
+
+/// An audited curve's counts in the written samples, per criterion, and fit's count.
+void SummarizeCurveAudit(
+  vtkPolyData* result, vtkPolyData* curve, vtkIdType line, std::ostream& summary)
+{
+  const auto& criterionCount = names::CriterionViolations;
+  summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
+          << " shape violations in the written samples (collinearity "
+          << CellValue(result, criterionCount[0], line) << ", convexity "
+          << CellValue(result, criterionCount[1], line) << "+"
+          << CellValue(result, criterionCount[2], line) << ", coplanarity "
+          << CellValue(result, criterionCount[3], line) << ", torsion sign "
+          << CellValue(result, criterionCount[4], line) << "+"
+          << CellValue(result, criterionCount[5], line) << ")";
+  // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
+  if (curve->GetCellData()->GetArray(names::ShapeViolations))
+  {
+    summary << "; fit's audit: " << CellValue(curve, names::ShapeViolations, line);
+  }
+}
+
+/// The lines whose curve audit could not check though their data are fine.
+struct UnauditedCurves
+{
+  std::vector<std::string> Unmatched;      ///< spans or closure differ from the data's
+  std::vector<std::string> Approximations; ///< knots that are not the data points
+};
+
+/// A line per line of the analysis' output: the data's discrete shape and, with a
+/// CURVE, its audit or why it was not audited.
+UnauditedCurves SummarizeAudit(vtkPolyData* result, vtkPolyData* curve, std::ostream& summary)
+{
+  const DiscreteShape shape(result);
+  UnauditedCurves unaudited;
+  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
+  vtkIdType line = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const std::string problem = DataProblem(result, ids, n);
+    summary << LineName(result, line) << ": ";
+    if (problem == OutOfRange)
+    {
+      summary << "skipped (" << problem << ")\n";
+      continue;
+    }
+    shape.Summarize(ids, n, summary);
+    if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
+    {
+      SummarizeCurveAudit(result, curve, line, summary);
+    }
+    else if (curve)
+    {
+      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
+      // approximation's knots are not the data points (its NoiseLevel is the distance).
+      const bool approximation = CellValue(curve, names::NoiseLevel, line) > 0.0;
+      const std::string why = !result->GetCellData()->GetArray(names::ShapeViolations)
+        ? "INPUT has cells other than lines: no counts per line"
+        : !problem.empty() ? problem
+        : approximation    ? "it approximates the data: its knots are not the data points"
+                           : "it does not match the data";
+      summary << "; curve: not audited (" << why << ")";
+      if (problem.empty())
+      {
+        auto& lines = approximation ? unaudited.Approximations : unaudited.Unmatched;
+        lines.push_back(LineName(result, line));
+      }
+    }
+    summary << "\n";
+  }
+  return unaudited;
+}
+
+/// A curve audit could not check is an error: it was not fitted to these data, or
+/// it approximates them (fit audits that against its reference polygon).
+void CheckAudited(
+  const UnauditedCurves& unaudited, const std::string& curvePath, const std::string& input)
+{
+  if (!unaudited.Unmatched.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(curvePath) + " does not match INPUT " +
+      InputName(input) + " (" + Join(unaudited.Unmatched) +
+      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
+      "with the data it was fitted to, and the same --closed (a curve that approximates the "
+      "data is audited by fit alone)");
+  }
+  if (!unaudited.Approximations.empty())
+  {
+    throw std::runtime_error("CURVE " + InputName(curvePath) + " approximates INPUT " +
+      InputName(input) + " (" + Join(unaudited.Approximations) +
+      "): audit checks a curve through the data points; fit audited the approximation against "
+      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
+  }
+}
+
 int Audit(Arguments& args)
 {
   if (args.Positional.empty() || args.Positional.size() > 2)
@@ -1351,126 +1541,23 @@ int Audit(Arguments& args)
   }
 
   const std::string input = args.Positional[0];
+  const std::string curvePath = args.Positional.size() == 2 ? args.Positional[1] : "";
   vtkSmartPointer<vtkPolyData> data = Read(input, lineColumn);
   analysis->SetInputData(0, data);
   vtkSmartPointer<vtkPolyData> curve;
   if (args.Positional.size() == 2)
   {
-    curve = Read(args.Positional[1]);
-    for (const char* name :
-      { names::SpanIndex, names::Tangent, names::Binormal, names::Curvature, names::Torsion })
-    {
-      if (!curve->GetPointData()->GetArray(name))
-      {
-        throw std::runtime_error(InputName(args.Positional[1]) + " has no point array " + name +
-          ": CURVE must be a curve written by 'shapesplines fit' (or a Shape Splines filter)");
-      }
-    }
-    // Lines are paired in order: with a line more or less every pair is wrong.
-    if (curve->GetNumberOfLines() != data->GetNumberOfLines())
-    {
-      std::ostringstream message;
-      message << "CURVE " << InputName(args.Positional[1]) << " does not match INPUT "
-              << InputName(input) << ": lines " << curve->GetNumberOfLines() << " in CURVE, "
-              << data->GetNumberOfLines() << " in INPUT (audit a curve with the data it was "
-              << "fitted to; a fit that skipped lines wrote fewer)";
-      throw std::runtime_error(message.str());
-    }
+    curve = ReadFittedCurve(curvePath, input, data);
     analysis->SetInputData(1, curve);
   }
   MessageCounter messages({ analysis });
   analysis->Update();
   vtkPolyData* result = analysis->GetOutput();
-  vtkDataArray* curvature = result->GetPointData()->GetArray(names::DiscreteCurvature);
-  vtkDataArray* torsion = result->GetPointData()->GetArray(names::DiscreteTorsion);
-  vtkDataArray* collinear = result->GetPointData()->GetArray(names::Collinear);
-  vtkDataArray* coplanar = result->GetPointData()->GetArray(names::Coplanar);
-  // The segments at an open line's ends have no discrete torsion: 0 there, and
-  // not coplanar; a coplanar segment's 0 is the data's.
-  const auto definedTorsion = [&](vtkIdType id) {
-    return torsion->GetComponent(id, 0) != 0.0 || coplanar->GetComponent(id, 0) != 0.0;
-  };
+
   std::ostream silent(nullptr);
   // With the result on stdout, the summary goes to stderr.
   std::ostream& summary = quiet ? silent : output == "-" ? std::cerr : std::cout;
-  std::vector<std::string> unmatched;
-  std::vector<std::string> approximations;
-  auto it = vtk::TakeSmartPointer(result->GetLines()->NewIterator());
-  vtkIdType line = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++line)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const std::string problem = DataProblem(result, ids, n);
-    if (problem == OutOfRange)
-    {
-      summary << LineName(result, line) << ": skipped (" << problem << ")\n";
-      continue;
-    }
-    double maxCurvature = 0.0;
-    int collinearCount = 0;
-    int coplanarCount = 0;
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      maxCurvature = std::max(maxCurvature, curvature->GetComponent(ids[k], 0));
-      collinearCount += collinear->GetComponent(ids[k], 0) != 0.0;
-      coplanarCount += coplanar->GetComponent(ids[k], 0) != 0.0;
-    }
-    summary << LineName(result, line) << ": " << n << " points, max discrete curvature "
-            << maxCurvature << ", discrete torsion " << RangeText(torsion, ids, n, definedTorsion)
-            << ", " << collinearCount << " collinear points, " << coplanarCount
-            << " coplanar segments";
-    if (curve && CellValue(result, names::ShapeViolations, line) >= 0)
-    {
-      const auto& criterionCount = names::CriterionViolations;
-      summary << "; curve: " << CellValue(result, names::ShapeViolations, line)
-              << " shape violations in the written samples (collinearity "
-              << CellValue(result, criterionCount[0], line) << ", convexity "
-              << CellValue(result, criterionCount[1], line) << "+"
-              << CellValue(result, criterionCount[2], line) << ", coplanarity "
-              << CellValue(result, criterionCount[3], line) << ", torsion sign "
-              << CellValue(result, criterionCount[4], line) << "+"
-              << CellValue(result, criterionCount[5], line) << ")";
-      // A .vtp written by fit carries fit's count: see "Shape violations" in --help.
-      if (curve->GetCellData()->GetArray(names::ShapeViolations))
-      {
-        summary << "; fit's audit: " << CellValue(curve, names::ShapeViolations, line);
-      }
-    }
-    else if (curve)
-    {
-      // Not audited (-1, or no counts at all): the data's doing, else the curve's. An
-      // approximation's knots are not the data points (its NoiseLevel is the distance).
-      const bool approximation = CellValue(curve, names::NoiseLevel, line) > 0.0;
-      const std::string why = !result->GetCellData()->GetArray(names::ShapeViolations)
-        ? "INPUT has cells other than lines: no counts per line"
-        : !problem.empty() ? problem
-        : approximation    ? "it approximates the data: its knots are not the data points"
-                           : "it does not match the data";
-      summary << "; curve: not audited (" << why << ")";
-      if (problem.empty())
-      {
-        (approximation ? approximations : unmatched).push_back(LineName(result, line));
-      }
-    }
-    summary << "\n";
-  }
-  if (!unmatched.empty())
-  {
-    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " does not match INPUT " +
-      InputName(input) + " (" + Join(unmatched) +
-      ": the curve's spans or closure differ from the data's, see the warnings): audit a curve "
-      "with the data it was fitted to, and the same --closed (a curve that approximates the "
-      "data is audited by fit alone)");
-  }
-  if (!approximations.empty())
-  {
-    throw std::runtime_error("CURVE " + InputName(args.Positional[1]) + " approximates INPUT " +
-      InputName(input) + " (" + Join(approximations) +
-      "): audit checks a curve through the data points; fit audited the approximation against "
-      "its reference polygon (ShapeViolations in CURVE, printed by fit)");
-  }
+  CheckAudited(SummarizeAudit(result, curve, summary), curvePath, input);
   if (!output.empty())
   {
     Write(result, output);
