@@ -224,8 +224,11 @@ SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progre
   return sampled;
 }
 
-FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& options,
-  const CurveBuilder& build, const std::vector<double>& pointValues)
+namespace
+{
+/// Refuses what fitPolyline cannot fit: non-finite points, coordinates
+/// beyond LargestCoordinate, point values that are not one per point.
+void checkPoints(const std::vector<Vec3>& points, const std::vector<double>& pointValues)
 {
   if (!pointValues.empty() && pointValues.size() != points.size())
   {
@@ -243,6 +246,31 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
         " has a coordinate beyond 1e300, where the curve can leave the double range");
     }
   }
+}
+
+/// The sampling options for the fit's normalised curve (a target length in
+/// its units), arc-length samples capped at RunawayLengthFactor polylines.
+SamplingOptions normalisedSampling(
+  SamplingOptions sampling, const FittedPolyline& fit, const CleanPolyline& reference)
+{
+  sampling.TargetLength /= fit.Scale;
+  if (sampling.SampleMode == SamplingOptions::Mode::ArcLength && sampling.TargetLength > 0.0)
+  {
+    const double runaway = RunawayLengthFactor * reference.length() / sampling.TargetLength;
+    if (runaway < static_cast<double>(sampling.MaximumSamples))
+    {
+      sampling.MaximumSamples =
+        std::max(static_cast<long>(std::ceil(runaway)), 2L * fit.Spline->numberOfSpans() + 2);
+    }
+  }
+  return sampling;
+}
+} // namespace
+
+FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& options,
+  const CurveBuilder& build, const std::vector<double>& pointValues)
+{
+  checkPoints(points, pointValues);
   FittedPolyline fit;
   fit.Data = cleanPolyline(points, options.Closed);
   if (fit.Data.Points.size() < 2)
@@ -313,18 +341,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.Audit = built.Audit ? *std::move(built.Audit)
                           : auditCurve(*fit.Spline, reference, fit.Shape, options.Tolerances,
                               options.AuditSubdivisions, fit.CoordinateNoise, options.Progress);
-  SamplingOptions sampling = options.Sampling;
-  sampling.TargetLength /= fit.Scale; // the curve is normalised; the option is in data units
-  if (sampling.SampleMode == SamplingOptions::Mode::ArcLength && sampling.TargetLength > 0.0)
-  {
-    const double runaway = RunawayLengthFactor * reference.length() / sampling.TargetLength;
-    if (runaway < static_cast<double>(sampling.MaximumSamples))
-    {
-      sampling.MaximumSamples =
-        std::max(static_cast<long>(std::ceil(runaway)), 2L * fit.Spline->numberOfSpans() + 2);
-    }
-  }
-  fit.Plan = planSamples(*fit.Spline, sampling);
+  fit.Plan = planSamples(*fit.Spline, normalisedSampling(options.Sampling, fit, reference));
   return fit;
 }
 } // namespace shapesplines
