@@ -152,7 +152,8 @@ struct KnotBlend
   Local EMinus, EPlus, S;
 };
 
-KnotBlend knotBlend(const Lookup& k, int i)
+/// around: the auxiliary parameters at knots i - 1, i, i + 1 (C4 only).
+KnotBlend knotBlend(const Lookup& k, int i, const Auxiliary* around)
 {
   const double hm3 = k.h(i - 3), hm2 = k.h(i - 2), hm1 = k.h(i - 1), h0 = k.h(i),
                hp1 = k.h(i + 1), hp2 = k.h(i + 2);
@@ -167,8 +168,7 @@ KnotBlend knotBlend(const Lookup& k, int i)
   }
   else
   {
-    const Auxiliary previous = auxiliary(k, i - 1), here = auxiliary(k, i),
-                    next = auxiliary(k, i + 1);
+    const Auxiliary &previous = around[0], &here = around[1], &next = around[2];
     const Local fMinus = blend(previous.Psi * hm2 + previous.Omega * hm3 + hm1, d0,
       here.PsiBarPrevious * h0 + here.OmegaBarPrevious * hp1, dm);
     const Local fPlus = blend(next.PsiBarPrevious * hp1 + next.OmegaBarPrevious * hp2 + h0, d0,
@@ -187,10 +187,10 @@ struct KnotPoints
   Local B3Previous, B4Previous, B0, B1, B2;
 };
 
-KnotPoints knotPoints(const Lookup& k, int i)
+/// around: the blends of knots i - 1, i, i + 1.
+KnotPoints knotPoints(const Lookup& k, int i, const KnotBlend* around)
 {
-  const KnotBlend previous = knotBlend(k, i - 1), here = knotBlend(k, i),
-                  next = knotBlend(k, i + 1);
+  const KnotBlend &previous = around[0], &here = around[1], &next = around[2];
   const double hm2 = k.h(i - 2), hm1 = k.h(i - 1), h0 = k.h(i), hp1 = k.h(i + 1);
   const double g = k.g(i), d = k.d(i);
   KnotPoints p;
@@ -206,10 +206,25 @@ KnotPoints knotPoints(const Lookup& k, int i)
 std::vector<SpanWeights> spanWeights(const Lookup& k)
 {
   const int n = k.spans();
+  // Each auxiliary serves three knots' blends and each blend three knots'
+  // points: computed once per knot, from knot -2 and -1.
+  std::vector<Auxiliary> auxiliaries;
+  if (k.P.Continuity == QuinticContinuity::C4)
+  {
+    for (int i = -2; i <= n + 2; ++i)
+    {
+      auxiliaries.push_back(auxiliary(k, i));
+    }
+  }
+  std::vector<KnotBlend> blends;
+  for (int i = -1; i <= n + 1; ++i)
+  {
+    blends.push_back(knotBlend(k, i, auxiliaries.empty() ? nullptr : &auxiliaries[i + 1]));
+  }
   std::vector<KnotPoints> points;
   for (int i = 0; i <= n; ++i)
   {
-    points.push_back(knotPoints(k, i));
+    points.push_back(knotPoints(k, i, &blends[i]));
   }
   std::vector<SpanWeights> weights(n);
   for (int i = 0; i < n; ++i)
