@@ -100,8 +100,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
   const FlatnessThreshold flat(curve, this->Diagonal, this->CoordinateNoise);
   const auto& knots = curve.knots();
   const int subdivisions = this->Subdivisions;
-  std::vector<Derivatives> values(subdivisions + 1);
-  std::vector<double> thresholds(subdivisions + 1);
+  std::vector<Derivatives>& values = this->Values;
+  std::vector<double>& thresholds = this->Thresholds;
+  values.resize(subdivisions + 1);
+  thresholds.resize(subdivisions + 1);
   const double h = knots[j + 1] - knots[j];
   // Both ends of the span, so that its frames see both knots.
   for (int k = 0; k <= subdivisions; ++k)
@@ -111,7 +113,8 @@ void CurveAuditor::audit(const Curve& curve, int j)
   }
   // A flat sample's normal only continues the frames (parallel transport):
   // the audit reads no normal where the curvature vanishes.
-  const auto frames = frenetFrames(values, thresholds);
+  frenetFrames(values, thresholds, this->Frames);
+  const std::vector<FrenetFrame>& frames = this->Frames;
   const double chordSpeed = (values[subdivisions][0] - values[0][0]).norm() / h;
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);

@@ -173,6 +173,10 @@ private:
   std::vector<double> Deviation;
   std::vector<double> LocalLength;
   std::vector<std::vector<double>> SampleCurvatures;
+  // One span's samples, thresholds and frames, reused from span to span.
+  std::vector<Derivatives> Values;
+  std::vector<double> Thresholds;
+  std::vector<FrenetFrame> Frames;
 };
 
 /// Audits a curve through data on a uniform sampling.
