@@ -453,7 +453,13 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
   for (int i = 0; i < n; ++i)
   {
     spline.XPower.push_back(bezierToPower(xBezier[i]));
-    spline.CPower.push_back(bezierToPower(cBezier[i]));
+    const std::array<Vec3, 6> cPower = bezierToPower(cBezier[i]);
+    std::array<Eigen::Vector4d, 6> xcPower;
+    for (int k = 0; k < 6; ++k)
+    {
+      xcPower[k] << spline.XPower.back()[k], cPower[k];
+    }
+    spline.XCPower.push_back(xcPower);
   }
   spline.XBezier = std::move(xBezier);
   return spline;
@@ -674,9 +680,15 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
 std::pair<std::array<double, 5>, Derivatives> TensionQuinticSpline::parametricDerivatives(
   int span, double tau, int order) const
 {
-  const auto x = powerDerivatives(this->XPower[span], tau, order, 0.0);
-  const auto c = powerDerivatives(this->CPower[span], tau, order, Vec3(Vec3::Zero()));
-  return { x, c };
+  const auto xc =
+    powerDerivatives(this->XCPower[span], tau, order, Eigen::Vector4d(Eigen::Vector4d::Zero()));
+  std::pair<std::array<double, 5>, Derivatives> out;
+  for (int r = 0; r <= MaxDerivativeOrder; ++r)
+  {
+    out.first[r] = xc[r][0];
+    out.second[r] = xc[r].tail<3>();
+  }
+  return out;
 }
 
 double TensionQuinticSpline::localParameter(int span, double x) const

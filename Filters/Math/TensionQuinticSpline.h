@@ -135,7 +135,8 @@ private:
   /// faster to evaluate than de Casteljau, and each sample evaluates X several times).
   std::vector<std::array<double, 6>> XBezier;
   std::vector<std::array<double, 6>> XPower;
-  std::vector<std::array<Vec3, 6>> CPower;
+  /// (X, C) in one vector: one Horner pass for both (vectorised as 4 doubles).
+  std::vector<std::array<Eigen::Vector4d, 6>> XCPower;
 };
 } // namespace shapesplines
 
