@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace shapesplines
@@ -95,29 +96,88 @@ std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
   return a;
 }
 
+namespace detail
+{
+/// The Taylor shift of powerDerivatives on one coordinate, to a fixed order:
+/// every loop bound known, so the coefficients stay in registers.
+template <int Order, typename T, size_t Points>
+void taylorShift(const std::array<T, Points>& a, int coordinate, double u, T* out)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  std::array<double, Points> c;
+  for (size_t k = 0; k < Points; ++k)
+  {
+    if constexpr (std::is_arithmetic_v<T>)
+    {
+      c[k] = a[k];
+    }
+    else
+    {
+      c[k] = a[k][coordinate];
+    }
+  }
+  double factorial = 1.0;
+  for (int r = 0; r <= Order; ++r)
+  {
+    for (int k = degree - 1; k >= r; --k)
+    {
+      c[k] = c[k] + u * c[k + 1];
+    }
+    factorial *= r > 0 ? r : 1;
+    if constexpr (std::is_arithmetic_v<T>)
+    {
+      out[r] = factorial * c[r];
+    }
+    else
+    {
+      out[r][coordinate] = factorial * c[r];
+    }
+  }
+}
+} // namespace detail
+
 /**
  * Derivatives 0..order of the polynomial sum a_k u^k (a from bezierToPower)
  * at u, by repeated Horner steps (a Taylor shift: after step r, a[r] holds
  * p^(r)(u) / r!). Fewer operations than a de Casteljau pass for the curves
  * that evaluate the same span many times. Orders above the degree, or above
- * MaxDerivativeOrder, are left zero.
+ * MaxDerivativeOrder, are left zero. T is double or a fixed-size Eigen vector,
+ * shifted coordinate by coordinate (the same arithmetic as on whole vectors,
+ * without their round trips through memory).
  */
 template <typename T, size_t Points>
 std::array<T, MaxDerivativeOrder + 1> powerDerivatives(
-  std::array<T, Points> a, double u, int order, const T& zero)
+  const std::array<T, Points>& a, double u, int order, const T& zero)
 {
   constexpr int degree = static_cast<int>(Points) - 1;
+  int coordinates = 1;
+  if constexpr (!std::is_arithmetic_v<T>)
+  {
+    coordinates = static_cast<int>(T::RowsAtCompileTime);
+  }
   std::array<T, MaxDerivativeOrder + 1> out;
   out.fill(zero);
-  double factorial = 1.0;
-  for (int r = 0; r <= std::min({ order, degree, MaxDerivativeOrder }); ++r)
+  const int top = std::min({ order, degree, MaxDerivativeOrder });
+  for (int c = 0; c < coordinates; ++c)
   {
-    for (int k = degree - 1; k >= r; --k)
+    switch (top)
     {
-      a[k] = a[k] + u * a[k + 1];
+      case 0:
+        detail::taylorShift<0>(a, c, u, out.data());
+        break;
+      case 1:
+        detail::taylorShift<1>(a, c, u, out.data());
+        break;
+      case 2:
+        detail::taylorShift<std::min(2, degree)>(a, c, u, out.data());
+        break;
+      case 3:
+        detail::taylorShift<std::min(3, degree)>(a, c, u, out.data());
+        break;
+      default:
+        detail::taylorShift<std::min(MaxDerivativeOrder, degree)>(a, c, u, out.data());
+        break;
     }
-    factorial *= r > 0 ? r : 1;
-    out[r] = factorial * a[r];
   }
   return out;
 }
