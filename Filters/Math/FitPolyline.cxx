@@ -116,6 +116,14 @@ void CurveAuditor::audit(const Curve& curve, int j)
   frenetFrames(values, thresholds, this->Frames);
   const std::vector<FrenetFrame>& frames = this->Frames;
   const double chordSpeed = (values[subdivisions][0] - values[0][0]).norm() / h;
+  // Distances from the reference's segment j, set up once for the span's samples.
+  const Vec3& a = this->Reference.Points[j];
+  const Vec3 ab = this->Reference.segment(j);
+  const double squared = ab.squaredNorm();
+  auto distanceToSegment = [&](const Vec3& p) {
+    const double along = squared > 0.0 ? std::clamp((p - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
+    return (p - (a + along * ab)).norm();
+  };
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);
   std::vector<double>& sampleCurvatures = this->SampleCurvatures[j];
@@ -135,7 +143,7 @@ void CurveAuditor::audit(const Curve& curve, int j)
     curvature = std::max(curvature, frames[k].Curvature);
     sampleCurvatures[k] = frames[k].Curvature;
     speed = std::min(speed, values[k][1].norm());
-    deviation = std::max(deviation, this->distanceToSegment(values[k][0], j));
+    deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
   this->Curvature[j] = curvature;
   this->Speed[j] = chordSpeed > 0.0 ? speed / chordSpeed : 1.0;
@@ -163,15 +171,6 @@ ShapeAudit CurveAuditor::result() const
     }
   }
   return audit;
-}
-
-double CurveAuditor::distanceToSegment(const Vec3& p, int j) const
-{
-  const Vec3& a = this->Reference.Points[j];
-  const Vec3 ab = this->Reference.segment(j);
-  const double squared = ab.squaredNorm();
-  const double along = squared > 0.0 ? std::clamp((p - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
-  return (p - (a + along * ab)).norm();
 }
 
 void CurveAuditor::auditAll(const Curve& curve, const ProgressCallback& progress)

@@ -161,8 +161,6 @@ public:
   const std::vector<double>& sampleCurvatures(int span) const { return this->SampleCurvatures[span]; }
 
 private:
-  double distanceToSegment(const Vec3& p, int span) const;
-
   ShapeAuditor Auditor;
   int Subdivisions;
   double CoordinateNoise;
