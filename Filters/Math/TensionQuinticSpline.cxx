@@ -819,29 +819,32 @@ std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const
 Derivatives TensionQuinticSpline::evaluateOnSpan(int span, double x, int order) const
 {
   const double u = this->localParameter(span, x);
-  const auto [xd, cd] = this->parametricDerivatives(span, u, order);
-  // Y(u) = s(X(u)) differentiated by Faa di Bruno, solved for the x-derivatives of s.
+  const auto xc =
+    powerDerivatives(this->XCPower[span], u, order, Eigen::Vector4d(Eigen::Vector4d::Zero()));
+  auto c = [&](int r) -> Vec3 { return xc[r].tail<3>(); };
+  // Y(u) = s(X(u)) differentiated by Faa di Bruno, solved for the x-derivatives
+  // of s; one division (by X'), the powers of its inverse multiply.
   Derivatives s;
   s.fill(Vec3::Zero());
-  s[0] = cd[0];
-  const double x1 = xd[1];
+  s[0] = c(0);
+  const double x1 = xc[1][0], x2 = xc[2][0], x3 = xc[3][0], x4 = xc[4][0];
+  const double inverse = 1.0 / x1;
   if (order >= 1)
   {
-    s[1] = cd[1] / x1;
+    s[1] = c(1) * inverse;
   }
   if (order >= 2)
   {
-    s[2] = (cd[2] - s[1] * xd[2]) / (x1 * x1);
+    s[2] = (c(2) - s[1] * x2) * (inverse * inverse);
   }
   if (order >= 3)
   {
-    s[3] = (cd[3] - 3.0 * s[2] * x1 * xd[2] - s[1] * xd[3]) / (x1 * x1 * x1);
+    s[3] = (c(3) - 3.0 * s[2] * x1 * x2 - s[1] * x3) * (inverse * inverse * inverse);
   }
   if (order >= 4)
   {
-    s[4] = (cd[4] - 6.0 * s[3] * x1 * x1 * xd[2] -
-             s[2] * (3.0 * xd[2] * xd[2] + 4.0 * x1 * xd[3]) - s[1] * xd[4]) /
-      (x1 * x1 * x1 * x1);
+    s[4] = (c(4) - 6.0 * s[3] * x1 * x1 * x2 - s[2] * (3.0 * x2 * x2 + 4.0 * x1 * x3) - s[1] * x4) *
+      (inverse * inverse * inverse * inverse);
   }
   return s;
 }
