@@ -29,8 +29,7 @@ int wrap(int a, int n)
 
 /// Weights on the de Boor points D_{i-3}..D_{i+3} of a point built at knot i.
 using Local = Eigen::Matrix<double, 7, 1>;
-/// Per span i: rows are the Bezier points b_{i,0..5}, columns D_{i-2}..D_{i+3}.
-using SpanWeights = Eigen::Matrix<double, 6, 6>;
+using SpanWeights = TensionQuinticSpline::SpanWeights;
 
 Local unit(int offset)
 {
@@ -416,7 +415,14 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
     throw std::invalid_argument("tension quintic spline: wrong number of knots or de Boor points");
   }
   parameters.check(closed ? n : n + 1);
-  const std::vector<SpanWeights> weights = spanWeights(lookup(t, parameters, closed));
+  return fromWeights(t, xi, points, parameters, closed, spanWeights(lookup(t, parameters, closed)));
+}
+
+TensionQuinticSpline TensionQuinticSpline::fromWeights(const std::vector<double>& t,
+  const std::vector<double>& xi, const std::vector<Vec3>& points,
+  const QuinticParameters& parameters, bool closed, const std::vector<SpanWeights>& weights)
+{
+  const int n = static_cast<int>(t.size()) - 1;
   const double period = t.back() - t.front();
   if (!nonIncreasingSpans(weights, xi, closed, period).empty())
   {
@@ -540,7 +546,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
       std::fill(relax.begin(), relax.end(), 1.0);
     }
     const Lookup k = lookup(t, result.Parameters, closed);
-    const std::vector<SpanWeights> weights = spanWeights(k);
+    std::vector<SpanWeights> weights = spanWeights(k);
     std::vector<double> target(knots);
     for (int i = 0; i < knots; ++i)
     {
@@ -572,6 +578,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
     result.KnotsMoved = *std::max_element(relax.begin(), relax.end()) > 0.0;
     if (result.Increasing || !recover || result.Recoveries == MaxRecoveries)
     {
+      result.Weights = std::move(weights);
       return result;
     }
     // Footnote 3: move the requested knots around a bad span halfway towards
@@ -617,8 +624,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
     throw std::invalid_argument("tension quintic spline: too few points or knots of the wrong size");
   }
   const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
-  const std::vector<SpanWeights> weights =
-    spanWeights(lookup(knots, abscissae.Parameters, closed));
+  const std::vector<SpanWeights>& weights = abscissae.Weights;
   const int unknowns = closed ? n : n + 5;
   Triplets a;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
@@ -671,7 +677,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
+    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
@@ -750,11 +756,10 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     throw std::invalid_argument("tension quintic spline: too few points to approximate");
   }
   const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
-  const std::vector<SpanWeights> weights =
-    spanWeights(lookup(knots, abscissae.Parameters, closed));
+  const std::vector<SpanWeights>& weights = abscissae.Weights;
   // The same X with any de Boor points: it maps the data parameters to spans and t.
-  const TensionQuinticSpline shape = fromControlPoints(
-    knots, abscissae.Xi, std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed);
+  const TensionQuinticSpline shape = fromWeights(knots, abscissae.Xi,
+    std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed, weights);
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   for (size_t j = 0; j < points.size(); ++j)
@@ -790,7 +795,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
+    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
