@@ -98,23 +98,34 @@ std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
 
 namespace detail
 {
-/// The Taylor shift of powerDerivatives on one coordinate, to a fixed order:
-/// every loop bound known, so the coefficients stay in registers.
-template <int Order, typename T, size_t Points>
-void taylorShift(const std::array<T, Points>& a, int coordinate, double u, T* out)
+/**
+ * The Taylor shift of powerDerivatives on Width coordinates from the first
+ * (Width 2: a pair in one SSE register), to a fixed order: every loop bound
+ * known, so the coefficients stay in registers.
+ */
+template <int Order, int Width, typename T, size_t Points>
+void taylorShift(const std::array<T, Points>& a, int first, double u, T* out)
 {
+  using Lane = std::conditional_t<Width == 1, double, Eigen::Array<double, Width, 1>>;
   constexpr int degree = static_cast<int>(Points) - 1;
-  std::array<double, Points> c;
-  for (size_t k = 0; k < Points; ++k)
-  {
+  auto load = [&](const T& v) -> Lane {
     if constexpr (std::is_arithmetic_v<T>)
     {
-      c[k] = a[k];
+      return v;
+    }
+    else if constexpr (Width == 1)
+    {
+      return v[first];
     }
     else
     {
-      c[k] = a[k][coordinate];
+      return v.template segment<Width>(first).array();
     }
+  };
+  std::array<Lane, Points> c;
+  for (size_t k = 0; k < Points; ++k)
+  {
+    c[k] = load(a[k]);
   }
   double factorial = 1.0;
   for (int r = 0; r <= Order; ++r)
@@ -128,10 +139,38 @@ void taylorShift(const std::array<T, Points>& a, int coordinate, double u, T* ou
     {
       out[r] = factorial * c[r];
     }
+    else if constexpr (Width == 1)
+    {
+      out[r][first] = factorial * c[r];
+    }
     else
     {
-      out[r][coordinate] = factorial * c[r];
+      out[r].template segment<Width>(first) = (factorial * c[r]).matrix();
     }
+  }
+}
+
+template <int Width, typename T, size_t Points>
+void taylorShift(const std::array<T, Points>& a, int top, int first, double u, T* out)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  switch (top)
+  {
+    case 0:
+      taylorShift<0, Width>(a, first, u, out);
+      break;
+    case 1:
+      taylorShift<1, Width>(a, first, u, out);
+      break;
+    case 2:
+      taylorShift<std::min(2, degree), Width>(a, first, u, out);
+      break;
+    case 3:
+      taylorShift<std::min(3, degree), Width>(a, first, u, out);
+      break;
+    default:
+      taylorShift<std::min(MaxDerivativeOrder, degree), Width>(a, first, u, out);
+      break;
   }
 }
 } // namespace detail
@@ -142,7 +181,7 @@ void taylorShift(const std::array<T, Points>& a, int coordinate, double u, T* ou
  * p^(r)(u) / r!). Fewer operations than a de Casteljau pass for the curves
  * that evaluate the same span many times. Orders above the degree, or above
  * MaxDerivativeOrder, are left zero. T is double or a fixed-size Eigen vector,
- * shifted coordinate by coordinate (the same arithmetic as on whole vectors,
+ * shifted two coordinates at a time (the same arithmetic as on whole vectors,
  * without their round trips through memory).
  */
 template <typename T, size_t Points>
@@ -150,33 +189,23 @@ std::array<T, MaxDerivativeOrder + 1> powerDerivatives(
   const std::array<T, Points>& a, double u, int order, const T& zero)
 {
   constexpr int degree = static_cast<int>(Points) - 1;
-  int coordinates = 1;
-  if constexpr (!std::is_arithmetic_v<T>)
-  {
-    coordinates = static_cast<int>(T::RowsAtCompileTime);
-  }
   std::array<T, MaxDerivativeOrder + 1> out;
   out.fill(zero);
   const int top = std::min({ order, degree, MaxDerivativeOrder });
-  for (int c = 0; c < coordinates; ++c)
+  if constexpr (std::is_arithmetic_v<T>)
   {
-    switch (top)
+    detail::taylorShift<1>(a, top, 0, u, out.data());
+  }
+  else
+  {
+    constexpr int coordinates = static_cast<int>(T::RowsAtCompileTime);
+    for (int c = 0; c + 1 < coordinates; c += 2)
     {
-      case 0:
-        detail::taylorShift<0>(a, c, u, out.data());
-        break;
-      case 1:
-        detail::taylorShift<1>(a, c, u, out.data());
-        break;
-      case 2:
-        detail::taylorShift<std::min(2, degree)>(a, c, u, out.data());
-        break;
-      case 3:
-        detail::taylorShift<std::min(3, degree)>(a, c, u, out.data());
-        break;
-      default:
-        detail::taylorShift<std::min(MaxDerivativeOrder, degree)>(a, c, u, out.data());
-        break;
+      detail::taylorShift<2>(a, top, c, u, out.data());
+    }
+    if constexpr (coordinates % 2 == 1)
+    {
+      detail::taylorShift<1>(a, top, coordinates - 1, u, out.data());
     }
   }
   return out;
