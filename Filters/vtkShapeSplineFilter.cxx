@@ -113,8 +113,8 @@ vtkDataArray* LineIdArray(vtkPointData* pointData, const char* name)
 vtkSmartPointer<vtkDoubleArray> TorsionColorRange(vtkDoubleArray* torsion)
 {
   const double* values = torsion->GetPointer(0);
-  const double typical = shapesplines::typicalMagnitude(
-    std::vector<double>(values, values + torsion->GetNumberOfTuples()));
+  const double typical =
+    shapesplines::typicalMagnitude(values, values + torsion->GetNumberOfTuples());
   auto range = NewArray(names::TorsionColorRange, 1, 2);
   range->SetValue(0, -typical);
   range->SetValue(1, typical);
