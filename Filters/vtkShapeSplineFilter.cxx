@@ -669,7 +669,6 @@ struct SampleOutput
     for (const auto& p : parameterNames)
     {
       this->ShapeParameters.push_back(NewArray(p.Name.c_str(), 1, this->Size));
-      this->ShapeParameters.back()->FillValue(0.0);
     }
     this->AllocateCells(lines, kept);
   }
@@ -755,6 +754,10 @@ void WritePassedThrough(
       frame->SetTuple3(next, 0.0, 0.0, 0.0);
     }
     out.SpanIndex->SetValue(next, 0);
+    for (vtkDoubleArray* parameter : out.ShapeParameters)
+    {
+      parameter->SetValue(next, 0.0);
+    }
     *cell++ = next++;
   }
 }
@@ -789,9 +792,10 @@ bool WriteSampledLine(
     const vtkIdType from = line.PointIds[fit.Data.SourceIndex[interval]];
     const vtkIdType to = line.PointIds[fit.Data.SourceIndex[(interval + 1) % knotCount]];
     out.Carried.Interpolate(next, from, to, fraction);
-    for (size_t p = 0; p < lineParameters.size() && p < out.ShapeParameters.size(); ++p)
+    for (size_t p = 0; p < out.ShapeParameters.size(); ++p)
     {
-      out.ShapeParameters[p]->SetValue(next, lineParameters[p].Values[span]);
+      out.ShapeParameters[p]->SetValue(
+        next, p < lineParameters.size() ? lineParameters[p].Values[span] : 0.0);
     }
     std::copy_n(samples.Values[s][0].data(), 3, out.Xyz + 3 * next);
     const auto& frame = sampled.Frames[s];
