@@ -109,6 +109,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
   for (int k = 0; k <= subdivisions; ++k)
   {
     values[k] = curve.evaluateOnSpan(j, knots[j] + h * k / subdivisions, 3);
+  }
+  // In a loop of their own, the samples' square roots and divisions overlap.
+  for (int k = 0; k <= subdivisions; ++k)
+  {
     thresholds[k] = flat(j, values[k][1]);
   }
   // A flat sample's normal only continues the frames (parallel transport):
