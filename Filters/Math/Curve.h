@@ -31,49 +31,9 @@ struct SpanParameter
   bool CellSummaryIsMaximum = true;
 };
 
-/**
- * Derivatives 0..order (in u) of the Bezier curve with points b at u in
- * [0, 1], from one de Casteljau pass: when r + 1 points remain, the r-th
- * derivative is n!/(n-r)! times their r-th forward difference (differences
- * and de Casteljau steps commute), n the degree. Orders above n, or above
- * MaxDerivativeOrder, are left zero.
- */
-template <typename T, size_t Points>
-std::array<T, MaxDerivativeOrder + 1> bezierDerivatives(
-  const std::array<T, Points>& b, double u, int order, const T& zero)
-{
-  constexpr int degree = static_cast<int>(Points) - 1;
-  std::array<T, MaxDerivativeOrder + 1> out;
-  out.fill(zero);
-  std::array<T, Points> w = b;
-  int remaining = static_cast<int>(Points);
-  for (int r = std::min({ order, degree, MaxDerivativeOrder }); r >= 0; --r)
-  {
-    for (; remaining > r + 1; --remaining)
-    {
-      for (int j = 0; j + 1 < remaining; ++j)
-      {
-        w[j] = (1.0 - u) * w[j] + u * w[j + 1];
-      }
-    }
-    std::array<T, Points> difference = w;
-    double factor = 1.0;
-    for (int level = r; level > 0; --level)
-    {
-      factor *= degree - level + 1;
-      for (int j = 0; j < level; ++j)
-      {
-        difference[j] = difference[j + 1] - difference[j];
-      }
-    }
-    out[r] = factor * difference[0];
-  }
-  return out;
-}
-
 /// The power-form coefficients a_k (p(u) = sum a_k u^k) of the Bezier curve
 /// with points b on [0, 1]: a_k = C(n, k) sum_i (-1)^(k-i) C(k, i) b_i, the
-/// forward differences the de Casteljau derivatives use.
+/// k-th forward difference of the points times C(n, k).
 template <typename T, size_t Points>
 std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
 {
