@@ -29,7 +29,8 @@ void addArrays(vtkFieldData* data, std::initializer_list<vtkAbstractArray*> arra
 
 /// The 95th percentile of |v| over the finite values v (0 when there is none):
 /// a typical size that a few spikes do not set.
-double typicalMagnitude(std::vector<double> values);
+double typicalMagnitude(const double* first, const double* last);
+double typicalMagnitude(const std::vector<double>& values);
 } // namespace shapesplines
 
 #endif

@@ -72,7 +72,7 @@ double TypicalToothValue(const std::vector<CombLine>& lines, vtkDataArray* value
       teethValues.push_back(values->GetComponent(id, 0));
     }
   }
-  return shapesplines::typicalMagnitude(std::move(teethValues));
+  return shapesplines::typicalMagnitude(teethValues);
 }
 
 /// The comb's geometry: a two-point cell per tooth (CombPart 0), then an

@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace shapesplines
@@ -30,49 +31,9 @@ struct SpanParameter
   bool CellSummaryIsMaximum = true;
 };
 
-/**
- * Derivatives 0..order (in u) of the Bezier curve with points b at u in
- * [0, 1], from one de Casteljau pass: when r + 1 points remain, the r-th
- * derivative is n!/(n-r)! times their r-th forward difference (differences
- * and de Casteljau steps commute), n the degree. Orders above n, or above
- * MaxDerivativeOrder, are left zero.
- */
-template <typename T, size_t Points>
-std::array<T, MaxDerivativeOrder + 1> bezierDerivatives(
-  const std::array<T, Points>& b, double u, int order, const T& zero)
-{
-  constexpr int degree = static_cast<int>(Points) - 1;
-  std::array<T, MaxDerivativeOrder + 1> out;
-  out.fill(zero);
-  std::array<T, Points> w = b;
-  int remaining = static_cast<int>(Points);
-  for (int r = std::min({ order, degree, MaxDerivativeOrder }); r >= 0; --r)
-  {
-    for (; remaining > r + 1; --remaining)
-    {
-      for (int j = 0; j + 1 < remaining; ++j)
-      {
-        w[j] = (1.0 - u) * w[j] + u * w[j + 1];
-      }
-    }
-    std::array<T, Points> difference = w;
-    double factor = 1.0;
-    for (int level = r; level > 0; --level)
-    {
-      factor *= degree - level + 1;
-      for (int j = 0; j < level; ++j)
-      {
-        difference[j] = difference[j + 1] - difference[j];
-      }
-    }
-    out[r] = factor * difference[0];
-  }
-  return out;
-}
-
 /// The power-form coefficients a_k (p(u) = sum a_k u^k) of the Bezier curve
 /// with points b on [0, 1]: a_k = C(n, k) sum_i (-1)^(k-i) C(k, i) b_i, the
-/// forward differences the de Casteljau derivatives use.
+/// k-th forward difference of the points times C(n, k).
 template <typename T, size_t Points>
 std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
 {
@@ -95,29 +56,117 @@ std::array<T, Points> bezierToPower(const std::array<T, Points>& b)
   return a;
 }
 
+namespace detail
+{
+/**
+ * The Taylor shift of powerDerivatives on Width coordinates from the first
+ * (Width 2: a pair in one SSE register), to a fixed order: every loop bound
+ * known, so the coefficients stay in registers.
+ */
+template <int Order, int Width, typename T, size_t Points>
+void taylorShift(const std::array<T, Points>& a, int first, double u, T* out)
+{
+  using Lane = std::conditional_t<Width == 1, double, Eigen::Array<double, Width, 1>>;
+  constexpr int degree = static_cast<int>(Points) - 1;
+  auto load = [&](const T& v) -> Lane {
+    if constexpr (std::is_arithmetic_v<T>)
+    {
+      return v;
+    }
+    else if constexpr (Width == 1)
+    {
+      return v[first];
+    }
+    else
+    {
+      return v.template segment<Width>(first).array();
+    }
+  };
+  std::array<Lane, Points> c;
+  for (size_t k = 0; k < Points; ++k)
+  {
+    c[k] = load(a[k]);
+  }
+  double factorial = 1.0;
+  for (int r = 0; r <= Order; ++r)
+  {
+    for (int k = degree - 1; k >= r; --k)
+    {
+      c[k] = c[k] + u * c[k + 1];
+    }
+    factorial *= r > 0 ? r : 1;
+    if constexpr (std::is_arithmetic_v<T>)
+    {
+      out[r] = factorial * c[r];
+    }
+    else if constexpr (Width == 1)
+    {
+      out[r][first] = factorial * c[r];
+    }
+    else
+    {
+      out[r].template segment<Width>(first) = (factorial * c[r]).matrix();
+    }
+  }
+}
+
+template <int Width, typename T, size_t Points>
+void taylorShift(const std::array<T, Points>& a, int top, int first, double u, T* out)
+{
+  constexpr int degree = static_cast<int>(Points) - 1;
+  switch (top)
+  {
+    case 0:
+      taylorShift<0, Width>(a, first, u, out);
+      break;
+    case 1:
+      taylorShift<1, Width>(a, first, u, out);
+      break;
+    case 2:
+      taylorShift<std::min(2, degree), Width>(a, first, u, out);
+      break;
+    case 3:
+      taylorShift<std::min(3, degree), Width>(a, first, u, out);
+      break;
+    default:
+      taylorShift<std::min(MaxDerivativeOrder, degree), Width>(a, first, u, out);
+      break;
+  }
+}
+} // namespace detail
+
 /**
  * Derivatives 0..order of the polynomial sum a_k u^k (a from bezierToPower)
  * at u, by repeated Horner steps (a Taylor shift: after step r, a[r] holds
  * p^(r)(u) / r!). Fewer operations than a de Casteljau pass for the curves
  * that evaluate the same span many times. Orders above the degree, or above
- * MaxDerivativeOrder, are left zero.
+ * MaxDerivativeOrder, are left zero. T is double or a fixed-size Eigen vector,
+ * shifted two coordinates at a time (the same arithmetic as on whole vectors,
+ * without their round trips through memory).
  */
 template <typename T, size_t Points>
 std::array<T, MaxDerivativeOrder + 1> powerDerivatives(
-  std::array<T, Points> a, double u, int order, const T& zero)
+  const std::array<T, Points>& a, double u, int order, const T& zero)
 {
   constexpr int degree = static_cast<int>(Points) - 1;
   std::array<T, MaxDerivativeOrder + 1> out;
   out.fill(zero);
-  double factorial = 1.0;
-  for (int r = 0; r <= std::min({ order, degree, MaxDerivativeOrder }); ++r)
+  const int top = std::min({ order, degree, MaxDerivativeOrder });
+  if constexpr (std::is_arithmetic_v<T>)
   {
-    for (int k = degree - 1; k >= r; --k)
+    detail::taylorShift<1>(a, top, 0, u, out.data());
+  }
+  else
+  {
+    constexpr int coordinates = static_cast<int>(T::RowsAtCompileTime);
+    for (int c = 0; c + 1 < coordinates; c += 2)
     {
-      a[k] = a[k] + u * a[k + 1];
+      detail::taylorShift<2>(a, top, c, u, out.data());
     }
-    factorial *= r > 0 ? r : 1;
-    out[r] = factorial * a[r];
+    if constexpr (coordinates % 2 == 1)
+    {
+      detail::taylorShift<1>(a, top, coordinates - 1, u, out.data());
+    }
   }
   return out;
 }

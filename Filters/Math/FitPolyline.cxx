@@ -100,19 +100,34 @@ void CurveAuditor::audit(const Curve& curve, int j)
   const FlatnessThreshold flat(curve, this->Diagonal, this->CoordinateNoise);
   const auto& knots = curve.knots();
   const int subdivisions = this->Subdivisions;
-  std::vector<Derivatives> values(subdivisions + 1);
-  std::vector<double> thresholds(subdivisions + 1);
+  std::vector<Derivatives>& values = this->Values;
+  std::vector<double>& thresholds = this->Thresholds;
+  values.resize(subdivisions + 1);
+  thresholds.resize(subdivisions + 1);
   const double h = knots[j + 1] - knots[j];
   // Both ends of the span, so that its frames see both knots.
   for (int k = 0; k <= subdivisions; ++k)
   {
     values[k] = curve.evaluateOnSpan(j, knots[j] + h * k / subdivisions, 3);
+  }
+  // In a loop of their own, the samples' square roots and divisions overlap.
+  for (int k = 0; k <= subdivisions; ++k)
+  {
     thresholds[k] = flat(j, values[k][1]);
   }
   // A flat sample's normal only continues the frames (parallel transport):
   // the audit reads no normal where the curvature vanishes.
-  const auto frames = frenetFrames(values, thresholds);
+  frenetFrames(values, thresholds, this->Frames);
+  const std::vector<FrenetFrame>& frames = this->Frames;
   const double chordSpeed = (values[subdivisions][0] - values[0][0]).norm() / h;
+  // Distances from the reference's segment j, set up once for the span's samples.
+  const Vec3& a = this->Reference.Points[j];
+  const Vec3 ab = this->Reference.segment(j);
+  const double squared = ab.squaredNorm();
+  auto distanceToSegment = [&](const Vec3& p) {
+    const double along = squared > 0.0 ? std::clamp((p - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
+    return (p - (a + along * ab)).norm();
+  };
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);
   std::vector<double>& sampleCurvatures = this->SampleCurvatures[j];
@@ -132,7 +147,7 @@ void CurveAuditor::audit(const Curve& curve, int j)
     curvature = std::max(curvature, frames[k].Curvature);
     sampleCurvatures[k] = frames[k].Curvature;
     speed = std::min(speed, values[k][1].norm());
-    deviation = std::max(deviation, this->distanceToSegment(values[k][0], j));
+    deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
   this->Curvature[j] = curvature;
   this->Speed[j] = chordSpeed > 0.0 ? speed / chordSpeed : 1.0;
@@ -160,15 +175,6 @@ ShapeAudit CurveAuditor::result() const
     }
   }
   return audit;
-}
-
-double CurveAuditor::distanceToSegment(const Vec3& p, int j) const
-{
-  const Vec3& a = this->Reference.Points[j];
-  const Vec3 ab = this->Reference.segment(j);
-  const double squared = ab.squaredNorm();
-  const double along = squared > 0.0 ? std::clamp((p - a).dot(ab) / squared, 0.0, 1.0) : 0.0;
-  return (p - (a + along * ab)).norm();
 }
 
 void CurveAuditor::auditAll(const Curve& curve, const ProgressCallback& progress)

@@ -161,8 +161,6 @@ public:
   const std::vector<double>& sampleCurvatures(int span) const { return this->SampleCurvatures[span]; }
 
 private:
-  double distanceToSegment(const Vec3& p, int span) const;
-
   ShapeAuditor Auditor;
   int Subdivisions;
   double CoordinateNoise;
@@ -173,6 +171,10 @@ private:
   std::vector<double> Deviation;
   std::vector<double> LocalLength;
   std::vector<std::vector<double>> SampleCurvatures;
+  // One span's samples, thresholds and frames, reused from span to span.
+  std::vector<Derivatives> Values;
+  std::vector<double> Thresholds;
+  std::vector<FrenetFrame> Frames;
 };
 
 /// Audits a curve through data on a uniform sampling.

@@ -47,9 +47,18 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, d
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   const std::vector<double>& flatCurvature, const Vec3* previousNormal)
 {
+  std::vector<FrenetFrame> frames;
+  frenetFrames(samples, flatCurvature, frames, previousNormal);
+  return frames;
+}
+
+void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature,
+  std::vector<FrenetFrame>& frames, const Vec3* previousNormal)
+{
   const int n = static_cast<int>(samples.size());
-  std::vector<FrenetFrame> frames(n);
-  std::vector<bool> defined(n, false);
+  frames.assign(n, FrenetFrame{});
+  // A sample's normal is defined where its curvature exceeds the flat one.
+  auto defined = [&](int k) { return frames[k].Curvature > flatCurvature[k]; };
 
   Vec3 lastTangent = Vec3::UnitX();
   for (int k = 0; k < n; ++k)
@@ -83,7 +92,6 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
       f.Normal = unitVector(unitVector(cross).cross(f.Tangent));
       f.Binormal = f.Tangent.cross(f.Normal);
       f.Torsion = d1.dot(d2.cross(d3)) / (crossNorm * crossNorm);
-      defined[k] = true;
     }
   }
 
@@ -91,7 +99,7 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   // forwards from the previous normal (or the first defined sample), then
   // backwards before the first defined sample if nothing came before.
   int first = 0;
-  while (first < n && !defined[first])
+  while (first < n && !defined(first))
   {
     ++first;
   }
@@ -100,7 +108,7 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
                           : (first < n ? frames[first].Normal
                                        : anyNormal(n > 0 ? frames[0].Tangent : Vec3::UnitX()));
   auto fill = [&](int k) {
-    if (defined[k])
+    if (defined(k))
     {
       normal = frames[k].Normal;
       return;
@@ -120,6 +128,5 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   {
     fill(k);
   }
-  return frames;
 }
 } // namespace shapesplines

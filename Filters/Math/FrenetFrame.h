@@ -29,6 +29,10 @@ struct FrenetFrame
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   const std::vector<double>& flatCurvature, const Vec3* previousNormal = nullptr);
 
+/// The same into frames, reusing its storage (a caller framing many short runs).
+void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature,
+  std::vector<FrenetFrame>& frames, const Vec3* previousNormal = nullptr);
+
 /// The same with one threshold for every sample.
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature);
 } // namespace shapesplines

@@ -681,9 +681,11 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   spline.Exponents = std::move(exponents);
   spline.KnotShape = geometry.knotShape();
   spline.Bezier.resize(spans);
+  spline.QuarticPower.resize(spans);
   for (int k = 0; k < spans; ++k)
   {
     spline.Bezier[k] = geometry.bezier<Vec3>(k, P);
+    spline.QuarticPower[k] = bezierToPower(spline.Bezier[k]);
   }
   return spline;
 }
@@ -700,7 +702,7 @@ Derivatives QQRSpline::evaluateOnSpan(int span, double x, int order) const
   {
     // The qqr basis at alpha = beta = 4 is the quartic Bernstein basis
     // (A2 = 6 t^2 (1-t)^2): a quartic Bezier span, no powers to take.
-    out = bezierDerivatives(e, t, order, Vec3(Vec3::Zero()));
+    out = powerDerivatives(this->QuarticPower[span], t, order, Vec3(Vec3::Zero()));
   }
   else
   {

@@ -224,6 +224,9 @@ private:
     const QQRKnotShape& knotShape, QQRConstruction construction);
 
   std::vector<std::array<Vec3, 5>> Bezier;
+  /// Per span, the power form of its quartic Bezier curve (bezierToPower):
+  /// the span itself where alpha = beta = 4.
+  std::vector<std::array<Vec3, 5>> QuarticPower;
   std::vector<std::array<double, 2>> Exponents;
   QQRKnotShape KnotShape;
 };

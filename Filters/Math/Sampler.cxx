@@ -77,9 +77,9 @@ SpeedJet speedJet(const Derivatives& d)
 }
 
 /**
- * Arc length between two samples a < b of one span, from the values the
- * samples already hold (s', s'', s''' at both ends, b's taken on this span)
- * and the speed at the middle: the symmetric rule exact for polynomials of
+ * Arc length between two samples a < b of one span, from the speed jets of
+ * the values the samples already hold (s', s'', s''' at both ends, b's taken
+ * on this span) and the speed at the middle: the symmetric rule exact for polynomials of
  * degree 7 (weights derived on [-1, 1]: 19/35 for the end values, 4/35 and
  * 1/105 for their first and second derivatives, 32/35 for the middle).
  * Where it differs from the quintic Hermite rule (the same without the middle)
@@ -88,12 +88,10 @@ SpeedJet speedJet(const Derivatives& d)
  * end, the 8-point Gauss-Legendre rule is used instead, on halves until they
  * agree. Two evaluations per sample instead of nine on smooth spans.
  */
-double sampledArcLength(const Curve& curve, int span, double a, const Derivatives& atA,
-  double b, const Derivatives& atB)
+double sampledArcLength(
+  const Curve& curve, int span, double a, const SpeedJet& left, double b, const SpeedJet& right)
 {
   const double half = 0.5 * (b - a);
-  const SpeedJet left = speedJet(atA);
-  const SpeedJet right = speedJet(atB);
   const double ends = left.Value + right.Value;
   const double slopes = half * (left.First - right.First);
   const double bends = half * half * (left.Second + right.Second);
@@ -237,10 +235,12 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan, const Pro
 
   // Consecutive samples share a span, or the later one starts the next span:
   // then the span's own values at its end are needed (the third derivative
-  // can jump at the knot).
-  auto lengthTo = [&](int from, int span, double end, const Derivatives* atEnd) {
-    return sampledArcLength(curve, span, samples.Parameter[from], samples.Values[from], end,
-      atEnd ? *atEnd : curve.evaluateOnSpan(span, end, 3));
+  // can jump at the knot). Each sample's speed jet serves both its intervals.
+  std::vector<SpeedJet> jets(samples.size());
+  std::transform(samples.Values.begin(), samples.Values.end(), jets.begin(), speedJet);
+  auto lengthTo = [&](int from, int span, double end, const SpeedJet* atEnd) {
+    return sampledArcLength(curve, span, samples.Parameter[from], jets[from], end,
+      atEnd ? *atEnd : speedJet(curve.evaluateOnSpan(span, end, 3)));
   };
   samples.ArcLength.resize(samples.size(), 0.0);
   for (int k = 1; k < samples.size(); ++k)
@@ -250,7 +250,7 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan, const Pro
     const bool sameSpan = samples.Span[k] == span;
     samples.ArcLength[k] = samples.ArcLength[k - 1] +
       lengthTo(k - 1, span, sameSpan ? samples.Parameter[k] : knots[span + 1],
-        sameSpan ? &samples.Values[k] : nullptr);
+        sameSpan ? &jets[k] : nullptr);
   }
   samples.Length = samples.ArcLength.back();
   if (curve.isClosed())

@@ -141,6 +141,14 @@ ShapeAuditor::ShapeAuditor(
   this->Scale = diagonal > 0 ? diagonal : 1.0;
   this->Findings.resize(std::max(data.numberOfSpans(), 0));
   this->TransitionTwist.resize(this->Findings.size());
+  for (const Vec3& b : shape.Binormal)
+  {
+    this->UnitBinormal.push_back(b.normalized());
+  }
+  for (int i = 0; i <= data.numberOfSpans(); ++i)
+  {
+    this->TwistReverses.push_back(this->twistReversesAt(i));
+  }
 }
 
 void ShapeAuditor::fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA,
@@ -181,13 +189,13 @@ double ShapeAuditor::transitionDeficiency(int span) const
   const auto last = std::find_if(twist.rbegin(), twist.rend(), right).base();
   const double leading = std::accumulate(twist.begin(), first, 0.0);
   const double trailing = std::accumulate(last, twist.end(), 0.0);
-  return (this->twistReversesAt(span) ? 0.0 : leading) + std::accumulate(first, last, 0.0) +
-    (this->twistReversesAt(span + 1) ? 0.0 : trailing);
+  return (this->TwistReverses[span] ? 0.0 : leading) + std::accumulate(first, last, 0.0) +
+    (this->TwistReverses[span + 1] ? 0.0 : trailing);
 }
 
 double ShapeAuditor::signedCurvature(const FrenetFrame& f, int point) const
 {
-  return f.Curvature * f.Binormal.dot(this->Shape.Binormal[point].normalized()) * this->Scale;
+  return f.Curvature * f.Binormal.dot(this->UnitBinormal[point]) * this->Scale;
 }
 
 void ShapeAuditor::add(const AuditSample& s)
@@ -227,7 +235,7 @@ void ShapeAuditor::add(const AuditSample& s)
   {
     const int planeAt = shape.Convex[j] ? j : (shape.Convex[next] ? next : -1);
     const double sine =
-      planeAt >= 0 ? f.Binormal.cross(shape.Binormal[planeAt].normalized()).norm() : 0.0;
+      planeAt >= 0 ? f.Binormal.cross(this->UnitBinormal[planeAt]).norm() : 0.0;
     if (sine > tolerance)
     {
       this->fail(s, ShapeCriterion::Coplanarity, j, j, j, sine - tolerance);
@@ -276,7 +284,7 @@ void ShapeAuditor::add(const AuditSample& s)
   {
     const double twist = bends ? f.Torsion * sign(shape.Torsion[j]) * this->Scale : 0.0;
     const double deficiency = twist < -tolerance ? -twist - tolerance : 0.0;
-    if (this->twistReversesAt(j) || this->twistReversesAt(j + 1))
+    if (this->TwistReverses[j] || this->TwistReverses[j + 1])
     {
       this->TransitionTwist[j].push_back(deficiency);
     }

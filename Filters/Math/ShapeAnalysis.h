@@ -166,6 +166,10 @@ private:
   const DiscreteShape& Shape;
   ShapeTolerances Tolerances;
   double Scale = 1.0;
+  /// Per point, the data's unit binormal; per knot, twistReversesAt: every
+  /// sample reads them.
+  std::vector<Vec3> UnitBinormal;
+  std::vector<char> TwistReverses;
   std::vector<std::vector<Finding>> Findings; ///< per span whose samples found them
   /// Per span next to a knot where the data's torsion changes sign: each
   /// inside sample's wrong-sign torsion beyond tolerance (0: right sign), in order.

@@ -29,8 +29,7 @@ int wrap(int a, int n)
 
 /// Weights on the de Boor points D_{i-3}..D_{i+3} of a point built at knot i.
 using Local = Eigen::Matrix<double, 7, 1>;
-/// Per span i: rows are the Bezier points b_{i,0..5}, columns D_{i-2}..D_{i+3}.
-using SpanWeights = Eigen::Matrix<double, 6, 6>;
+using SpanWeights = TensionQuinticSpline::SpanWeights;
 
 Local unit(int offset)
 {
@@ -152,7 +151,8 @@ struct KnotBlend
   Local EMinus, EPlus, S;
 };
 
-KnotBlend knotBlend(const Lookup& k, int i)
+/// around: the auxiliary parameters at knots i - 1, i, i + 1 (C4 only).
+KnotBlend knotBlend(const Lookup& k, int i, const Auxiliary* around)
 {
   const double hm3 = k.h(i - 3), hm2 = k.h(i - 2), hm1 = k.h(i - 1), h0 = k.h(i),
                hp1 = k.h(i + 1), hp2 = k.h(i + 2);
@@ -167,8 +167,7 @@ KnotBlend knotBlend(const Lookup& k, int i)
   }
   else
   {
-    const Auxiliary previous = auxiliary(k, i - 1), here = auxiliary(k, i),
-                    next = auxiliary(k, i + 1);
+    const Auxiliary &previous = around[0], &here = around[1], &next = around[2];
     const Local fMinus = blend(previous.Psi * hm2 + previous.Omega * hm3 + hm1, d0,
       here.PsiBarPrevious * h0 + here.OmegaBarPrevious * hp1, dm);
     const Local fPlus = blend(next.PsiBarPrevious * hp1 + next.OmegaBarPrevious * hp2 + h0, d0,
@@ -187,10 +186,10 @@ struct KnotPoints
   Local B3Previous, B4Previous, B0, B1, B2;
 };
 
-KnotPoints knotPoints(const Lookup& k, int i)
+/// around: the blends of knots i - 1, i, i + 1.
+KnotPoints knotPoints(const Lookup& k, int i, const KnotBlend* around)
 {
-  const KnotBlend previous = knotBlend(k, i - 1), here = knotBlend(k, i),
-                  next = knotBlend(k, i + 1);
+  const KnotBlend &previous = around[0], &here = around[1], &next = around[2];
   const double hm2 = k.h(i - 2), hm1 = k.h(i - 1), h0 = k.h(i), hp1 = k.h(i + 1);
   const double g = k.g(i), d = k.d(i);
   KnotPoints p;
@@ -206,10 +205,25 @@ KnotPoints knotPoints(const Lookup& k, int i)
 std::vector<SpanWeights> spanWeights(const Lookup& k)
 {
   const int n = k.spans();
+  // Each auxiliary serves three knots' blends and each blend three knots'
+  // points: computed once per knot, from knot -2 and -1.
+  std::vector<Auxiliary> auxiliaries;
+  if (k.P.Continuity == QuinticContinuity::C4)
+  {
+    for (int i = -2; i <= n + 2; ++i)
+    {
+      auxiliaries.push_back(auxiliary(k, i));
+    }
+  }
+  std::vector<KnotBlend> blends;
+  for (int i = -1; i <= n + 1; ++i)
+  {
+    blends.push_back(knotBlend(k, i, auxiliaries.empty() ? nullptr : &auxiliaries[i + 1]));
+  }
   std::vector<KnotPoints> points;
   for (int i = 0; i <= n; ++i)
   {
-    points.push_back(knotPoints(k, i));
+    points.push_back(knotPoints(k, i, &blends[i]));
   }
   std::vector<SpanWeights> weights(n);
   for (int i = 0; i < n; ++i)
@@ -401,7 +415,14 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
     throw std::invalid_argument("tension quintic spline: wrong number of knots or de Boor points");
   }
   parameters.check(closed ? n : n + 1);
-  const std::vector<SpanWeights> weights = spanWeights(lookup(t, parameters, closed));
+  return fromWeights(t, xi, points, parameters, closed, spanWeights(lookup(t, parameters, closed)));
+}
+
+TensionQuinticSpline TensionQuinticSpline::fromWeights(const std::vector<double>& t,
+  const std::vector<double>& xi, const std::vector<Vec3>& points,
+  const QuinticParameters& parameters, bool closed, const std::vector<SpanWeights>& weights)
+{
+  const int n = static_cast<int>(t.size()) - 1;
   const double period = t.back() - t.front();
   if (!nonIncreasingSpans(weights, xi, closed, period).empty())
   {
@@ -438,7 +459,13 @@ TensionQuinticSpline TensionQuinticSpline::fromControlPoints(const std::vector<d
   for (int i = 0; i < n; ++i)
   {
     spline.XPower.push_back(bezierToPower(xBezier[i]));
-    spline.CPower.push_back(bezierToPower(cBezier[i]));
+    const std::array<Vec3, 6> cPower = bezierToPower(cBezier[i]);
+    std::array<Eigen::Vector4d, 6> xcPower;
+    for (int k = 0; k < 6; ++k)
+    {
+      xcPower[k] << spline.XPower.back()[k], cPower[k];
+    }
+    spline.XCPower.push_back(xcPower);
   }
   spline.XBezier = std::move(xBezier);
   return spline;
@@ -519,7 +546,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
       std::fill(relax.begin(), relax.end(), 1.0);
     }
     const Lookup k = lookup(t, result.Parameters, closed);
-    const std::vector<SpanWeights> weights = spanWeights(k);
+    std::vector<SpanWeights> weights = spanWeights(k);
     std::vector<double> target(knots);
     for (int i = 0; i < knots; ++i)
     {
@@ -551,6 +578,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
     result.KnotsMoved = *std::max_element(relax.begin(), relax.end()) > 0.0;
     if (result.Increasing || !recover || result.Recoveries == MaxRecoveries)
     {
+      result.Weights = std::move(weights);
       return result;
     }
     // Footnote 3: move the requested knots around a bad span halfway towards
@@ -596,8 +624,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
     throw std::invalid_argument("tension quintic spline: too few points or knots of the wrong size");
   }
   const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
-  const std::vector<SpanWeights> weights =
-    spanWeights(lookup(knots, abscissae.Parameters, closed));
+  const std::vector<SpanWeights>& weights = abscissae.Weights;
   const int unknowns = closed ? n : n + 5;
   Triplets a;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
@@ -650,7 +677,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
+    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
@@ -659,9 +686,15 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
 std::pair<std::array<double, 5>, Derivatives> TensionQuinticSpline::parametricDerivatives(
   int span, double tau, int order) const
 {
-  const auto x = powerDerivatives(this->XPower[span], tau, order, 0.0);
-  const auto c = powerDerivatives(this->CPower[span], tau, order, Vec3(Vec3::Zero()));
-  return { x, c };
+  const auto xc =
+    powerDerivatives(this->XCPower[span], tau, order, Eigen::Vector4d(Eigen::Vector4d::Zero()));
+  std::pair<std::array<double, 5>, Derivatives> out;
+  for (int r = 0; r <= MaxDerivativeOrder; ++r)
+  {
+    out.first[r] = xc[r][0];
+    out.second[r] = xc[r].tail<3>();
+  }
+  return out;
 }
 
 double TensionQuinticSpline::localParameter(int span, double x) const
@@ -723,11 +756,10 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     throw std::invalid_argument("tension quintic spline: too few points to approximate");
   }
   const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
-  const std::vector<SpanWeights> weights =
-    spanWeights(lookup(knots, abscissae.Parameters, closed));
+  const std::vector<SpanWeights>& weights = abscissae.Weights;
   // The same X with any de Boor points: it maps the data parameters to spans and t.
-  const TensionQuinticSpline shape = fromControlPoints(
-    knots, abscissae.Xi, std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed);
+  const TensionQuinticSpline shape = fromWeights(knots, abscissae.Xi,
+    std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed, weights);
   Triplets normal;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   for (size_t j = 0; j < points.size(); ++j)
@@ -763,7 +795,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromControlPoints(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed);
+    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
@@ -792,29 +824,32 @@ std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const
 Derivatives TensionQuinticSpline::evaluateOnSpan(int span, double x, int order) const
 {
   const double u = this->localParameter(span, x);
-  const auto [xd, cd] = this->parametricDerivatives(span, u, order);
-  // Y(u) = s(X(u)) differentiated by Faa di Bruno, solved for the x-derivatives of s.
+  const auto xc =
+    powerDerivatives(this->XCPower[span], u, order, Eigen::Vector4d(Eigen::Vector4d::Zero()));
+  auto c = [&](int r) -> Vec3 { return xc[r].tail<3>(); };
+  // Y(u) = s(X(u)) differentiated by Faa di Bruno, solved for the x-derivatives
+  // of s; one division (by X'), the powers of its inverse multiply.
   Derivatives s;
   s.fill(Vec3::Zero());
-  s[0] = cd[0];
-  const double x1 = xd[1];
+  s[0] = c(0);
+  const double x1 = xc[1][0], x2 = xc[2][0], x3 = xc[3][0], x4 = xc[4][0];
+  const double inverse = 1.0 / x1;
   if (order >= 1)
   {
-    s[1] = cd[1] / x1;
+    s[1] = c(1) * inverse;
   }
   if (order >= 2)
   {
-    s[2] = (cd[2] - s[1] * xd[2]) / (x1 * x1);
+    s[2] = (c(2) - s[1] * x2) * (inverse * inverse);
   }
   if (order >= 3)
   {
-    s[3] = (cd[3] - 3.0 * s[2] * x1 * xd[2] - s[1] * xd[3]) / (x1 * x1 * x1);
+    s[3] = (c(3) - 3.0 * s[2] * x1 * x2 - s[1] * x3) * (inverse * inverse * inverse);
   }
   if (order >= 4)
   {
-    s[4] = (cd[4] - 6.0 * s[3] * x1 * x1 * xd[2] -
-             s[2] * (3.0 * xd[2] * xd[2] + 4.0 * x1 * xd[3]) - s[1] * xd[4]) /
-      (x1 * x1 * x1 * x1);
+    s[4] = (c(4) - 6.0 * s[3] * x1 * x1 * x2 - s[2] * (3.0 * x2 * x2 + 4.0 * x1 * x3) - s[1] * x4) *
+      (inverse * inverse * inverse * inverse);
   }
   return s;
 }

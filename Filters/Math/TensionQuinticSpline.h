@@ -59,12 +59,19 @@ public:
   /// The Greville abscissae (21): with gamma = lambda = 1 they give X(t) = t.
   static std::vector<double> grevilleAbscissae(const std::vector<double>& t, bool closed);
 
+  /// Per span, the weights of its six Bezier points (rows) on the de Boor
+  /// points D_{i-2}..D_{i+3} (columns), from the geometric construction.
+  using SpanWeights = Eigen::Matrix<double, 6, 6>;
+
   struct Abscissae
   {
     std::vector<double> Xi;
     /// The parameters used: those given, or pulled towards 1 where moving
     /// the knots did not give an increasing X.
     QuinticParameters Parameters;
+    /// The construction's weights for Parameters (what the curve on these
+    /// abscissae is built from).
+    std::vector<SpanWeights> Weights;
     int Recoveries = 0;      ///< rounds of footnote-3 recovery
     bool KnotsMoved = false; ///< some knots are not where they were asked to be
     bool Increasing = false; ///< X' > 0 on every span (false only without recovery)
@@ -123,6 +130,10 @@ public:
 
 private:
   TensionQuinticSpline(std::vector<double> knots, bool closed);
+  /// fromControlPoints with the construction's weights already computed.
+  static TensionQuinticSpline fromWeights(const std::vector<double>& t,
+    const std::vector<double>& xi, const std::vector<Vec3>& points,
+    const QuinticParameters& parameters, bool closed, const std::vector<SpanWeights>& weights);
   /// The local parameter on span where X = x (clamped to [0,1]).
   double localParameter(int span, double x) const;
 
@@ -135,7 +146,8 @@ private:
   /// faster to evaluate than de Casteljau, and each sample evaluates X several times).
   std::vector<std::array<double, 6>> XBezier;
   std::vector<std::array<double, 6>> XPower;
-  std::vector<std::array<Vec3, 6>> CPower;
+  /// (X, C) in one vector: one Horner pass for both (vectorised as 4 doubles).
+  std::vector<std::array<Eigen::Vector4d, 6>> XCPower;
 };
 } // namespace shapesplines
 

@@ -281,9 +281,16 @@ void VariableDegreeSpline::setNet()
     return this->Closed ? this->DeBoor[((j % count) + count) % count] : this->DeBoor[j + 2];
   };
   this->Net.resize(spans);
+  this->QuinticPower.resize(spans);
+  this->Quintic.resize(spans);
   for (int i = 0; i < spans; ++i)
   {
     this->Net[i] = spanNet<Vec3>(e, i, deBoor);
+    this->Quintic[i] = e.degree(i) == LowestVariableDegree && e.degree(i + 1) == LowestVariableDegree;
+    if (this->Quintic[i])
+    {
+      this->QuinticPower[i] = bezierToPower(this->Net[i]);
+    }
   }
 }
 
@@ -438,11 +445,23 @@ Derivatives VariableDegreeSpline::evaluateOnSpan(int span, double u, int order) 
 {
   const double h = this->Knots[span + 1] - this->Knots[span];
   const double v = std::clamp((u - this->Knots[span]) / h, 0.0, 1.0);
+  Derivatives out;
+  if (this->Quintic[span])
+  {
+    // The quintic Bernstein basis: the span's power form.
+    out = powerDerivatives(this->QuinticPower[span], v, order, Vec3(Vec3::Zero()));
+    double scale = 1.0;
+    for (int r = 1; r <= order; ++r)
+    {
+      scale /= h;
+      out[r] *= scale;
+    }
+    return out;
+  }
   const int knots = static_cast<int>(this->Parameters.Degree.size());
   const auto basis = pseudoBernstein(
     this->Parameters.Degree[span], this->Parameters.Degree[(span + 1) % knots], v, order);
   const auto& net = this->Net[span];
-  Derivatives out;
   out.fill(Vec3::Zero());
   double scale = 1.0; // h^-r: derivatives with respect to u
   for (int r = 0; r <= order; ++r)

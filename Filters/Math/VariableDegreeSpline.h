@@ -108,6 +108,10 @@ private:
   VariableDegreeParameters Parameters;
   std::vector<Vec3> DeBoor;
   std::vector<std::array<Vec3, 6>> Net; ///< per span, the pseudo Bezier points b_i0..b_i5
+  /// Per span of degree 5 at both knots, a quintic Bezier span: its power
+  /// form (bezierToPower), evaluated without the pseudo Bernstein basis.
+  std::vector<std::array<Vec3, 6>> QuinticPower;
+  std::vector<char> Quintic;
 };
 
 enum class VariableDegreeMode : int

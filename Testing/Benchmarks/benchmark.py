@@ -606,6 +606,8 @@ def main():
     parser.add_argument("--accuracy-only", action="store_true", help="only the accuracy table and plot")
     parser.add_argument("--shape-only", action="store_true",
                         help="only the automatic modes' cost and shape on users' data, and the noisy points' table")
+    parser.add_argument("--speed-only", action="store_true",
+                        help="only the speed table (output points per second and ratios)")
     parser.add_argument("--output", default="build/benchmark", help="folder for the plots")
     args = parser.parse_args()
     args.plugin = os.path.abspath(args.plugin)  # the growth runs load it from another folder
@@ -643,6 +645,8 @@ def main():
             print("%-24s %-9s %11.3g %8.2fx %8.2fx" % (name, family, rates[family], rates[family] / rates["vtk"],
                                                        rates[family] / rates["scipy"]))
     print("(x vtk, x SciPy: our rate over theirs)")
+    if args.speed_only:
+        return
     automatic_cost()
     shape_on_users_data()
     noisy_unevenly_spaced()
