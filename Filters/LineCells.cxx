@@ -99,28 +99,20 @@ vtkPolyData* polyDataInput(
   }
   return polyData;
 }
-std::vector<int> misfitArrays(vtkFieldData* data, vtkIdType tuples)
+std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples)
 {
-  std::vector<int> misfits;
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  std::string removed;
+  for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
   {
-    if (data->GetAbstractArray(a)->GetNumberOfTuples() != tuples)
+    const vtkIdType count = data->GetAbstractArray(a)->GetNumberOfTuples();
+    if (count != tuples)
     {
-      misfits.push_back(a);
+      const char* name = data->GetArrayName(a);
+      removed = (name ? std::string(name) : "#" + std::to_string(a)) + " (" +
+        std::to_string(count) + " tuples)" + (removed.empty() ? "" : ", ") + removed;
+      data->RemoveArray(a);
     }
   }
-  return misfits;
-}
-
-std::string describeArrays(vtkFieldData* data, const std::vector<int>& arrays)
-{
-  std::string text;
-  for (const int a : arrays)
-  {
-    const char* name = data->GetArrayName(a);
-    text += (text.empty() ? "" : ", ") + (name ? std::string(name) : "#" + std::to_string(a)) +
-      " (" + std::to_string(data->GetAbstractArray(a)->GetNumberOfTuples()) + " tuples)";
-  }
-  return text;
+  return removed;
 }
 } // namespace shapesplines

@@ -48,12 +48,10 @@ bool isLineIdName(const std::string& name);
 /// is NaN or infinite belong to no line. CellId is the line's index.
 std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* lineIds);
 
-/// The arrays of data (point or cell data) whose tuple count is not `tuples`,
-/// by index: a damaged file's, which no filter may read tuple by tuple.
-std::vector<int> misfitArrays(vtkFieldData* data, vtkIdType tuples);
-
-/// "X (23 tuples)", "Y (0 tuples)": the misfit arrays for a message.
-std::string describeArrays(vtkFieldData* data, const std::vector<int>& arrays);
+/// Removes from data (the attributes of a copy, never of the input) the arrays
+/// without `tuples` tuples: a damaged file's, which no filter may read tuple by
+/// tuple. Returns them for a warning, "X (23 tuples), Y (0 tuples)", or "".
+std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples);
 } // namespace shapesplines
 
 #endif

@@ -397,22 +397,18 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   output->ShallowCopy(input);
   const vtkIdType nPoints = input->GetNumberOfPoints();
   // A damaged file's arrays (not one tuple per point or cell) are not passed on.
-  for (vtkFieldData* data : { static_cast<vtkFieldData*>(output->GetPointData()),
-         static_cast<vtkFieldData*>(output->GetCellData()) })
+  const std::string points = shapesplines::removeMisfitArrays(output->GetPointData(), nPoints);
+  const std::string cells =
+    shapesplines::removeMisfitArrays(output->GetCellData(), input->GetNumberOfCells());
+  if (!points.empty())
   {
-    const bool points = data == output->GetPointData();
-    const std::vector<int> misfits =
-      shapesplines::misfitArrays(data, points ? nPoints : input->GetNumberOfCells());
-    if (!misfits.empty())
-    {
-      vtkWarningMacro(<< (points ? "Point" : "Cell") << " arrays without one tuple per "
-                      << (points ? "point" : "cell") << " are left out of the output: "
-                      << shapesplines::describeArrays(data, misfits) << ".");
-    }
-    for (auto a = misfits.rbegin(); a != misfits.rend(); ++a)
-    {
-      data->RemoveArray(*a);
-    }
+    vtkWarningMacro("Point arrays without one tuple per point are left out of the output: "
+      << points << ".");
+  }
+  if (!cells.empty())
+  {
+    vtkWarningMacro("Cell arrays without one tuple per cell are left out of the output: "
+      << cells << ".");
   }
   DiscreteShapeArrays discrete(nPoints);
   if (input->GetNumberOfLines() == 0)

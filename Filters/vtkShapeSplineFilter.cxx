@@ -174,16 +174,12 @@ std::vector<LineWork> ConnectedLines(vtkPolyData* input, vtkDataArray* lineIds)
 class PointArrayTransfer
 {
 public:
-  /// Arrays without a tuple per input point (misfitArrays) are left out.
-  PointArrayTransfer(vtkPointData* input, vtkIdType inputPoints, vtkIdType size)
+  /// input: the readable arrays (ReadableArrays), a tuple per input point each.
+  PointArrayTransfer(vtkPointData* input, vtkIdType size)
   {
     for (int a = 0; a < input->GetNumberOfArrays(); ++a)
     {
       vtkAbstractArray* source = input->GetAbstractArray(a);
-      if (source->GetNumberOfTuples() != inputPoints)
-      {
-        continue;
-      }
       auto target = vtk::TakeSmartPointer(source->NewInstance());
       target->SetName(source->GetName());
       target->SetNumberOfComponents(source->GetNumberOfComponents());
@@ -390,11 +386,12 @@ struct InputLines
 };
 
 /**
- * The input's line cells, or with ConnectPoints its points in order. None
- * (reported) when the run ends there with an empty output.
+ * The input's line cells, or with ConnectPoints its points in order (line ids
+ * from pointData, the input's readable arrays). None (reported) when the run
+ * ends there with an empty output.
  */
-std::optional<InputLines> GatherInputLines(
-  vtkAlgorithm* self, vtkPolyData* input, bool connectPoints, const char* lineIdArrayName)
+std::optional<InputLines> GatherInputLines(vtkAlgorithm* self, vtkPolyData* input,
+  vtkPointData* pointData, bool connectPoints, const char* lineIdArrayName)
 {
   // Points without cells, or with vertices only (a table's rows), become lines
   // in point order when ConnectPoints is on; polygons' points do not.
@@ -411,11 +408,11 @@ std::optional<InputLines> GatherInputLines(
   }
   if (gathered.Connected)
   {
-    gathered.LineIds = LineIdArray(input->GetPointData(), lineIdArrayName);
+    gathered.LineIds = LineIdArray(pointData, lineIdArrayName);
     if (!gathered.LineIds && NamesAnArray(lineIdArrayName))
     {
-      vtkErrorWithObjectMacro(self, "No numeric point array named '" << lineIdArrayName
-                                    << "' for the line ids: nothing fitted.");
+      vtkErrorWithObjectMacro(self, "No numeric point array named '"
+          << lineIdArrayName << "' with one tuple per point for the line ids: nothing fitted.");
       return std::nullopt;
     }
   }
@@ -444,8 +441,7 @@ std::optional<InputLines> GatherInputLines(
 
 /// The point array of this name the family reads per point, or null; a
 /// warning when the name names no numeric array.
-vtkDataArray* PointValuesArray(
-  vtkAlgorithm* self, vtkPointData* pointData, vtkIdType points, const char* name)
+vtkDataArray* PointValuesArray(vtkAlgorithm* self, vtkPointData* pointData, const char* name)
 {
   if (!name)
   {
@@ -458,36 +454,43 @@ vtkDataArray* PointValuesArray(
   }
   else if (!values)
   {
-    vtkWarningWithObjectMacro(self, "No point array named '" << name << "' in the input: ignored.");
-  }
-  else if (values->GetNumberOfTuples() != points)
-  {
-    // Reported with the other misfit arrays (ReportMisfitArrays).
-    return nullptr;
+    vtkWarningWithObjectMacro(self, "No point array named '"
+        << name << "' with one tuple per point in the input: ignored.");
   }
   return values;
 }
 
-/// Warns of input arrays without a tuple per point (cell): they are not read.
-void ReportMisfitArrays(vtkAlgorithm* self, vtkPolyData* input)
+/**
+ * The input's point and cell arrays the filter reads: shallow copies without
+ * those lacking a tuple per point (cell), a damaged file's, which a warning
+ * names.
+ */
+struct ReadableArrays
 {
-  vtkPointData* pd = input->GetPointData();
-  vtkCellData* cd = input->GetCellData();
-  const std::vector<int> points = shapesplines::misfitArrays(pd, input->GetNumberOfPoints());
-  const std::vector<int> cells = shapesplines::misfitArrays(cd, input->GetNumberOfCells());
-  if (!points.empty())
+  ReadableArrays(vtkAlgorithm* self, vtkPolyData* input)
   {
-    vtkWarningWithObjectMacro(self, "Point arrays without one tuple per point ("
-        << input->GetNumberOfPoints() << "), as a damaged file holds, are left out: "
-        << shapesplines::describeArrays(pd, points) << ".");
+    this->Points->ShallowCopy(input->GetPointData());
+    this->Cells->ShallowCopy(input->GetCellData());
+    const std::string points =
+      shapesplines::removeMisfitArrays(this->Points, input->GetNumberOfPoints());
+    const std::string cells =
+      shapesplines::removeMisfitArrays(this->Cells, input->GetNumberOfCells());
+    if (!points.empty())
+    {
+      vtkWarningWithObjectMacro(self, "Point arrays without one tuple per point ("
+          << input->GetNumberOfPoints() << "), as a damaged file holds, are left out: " << points
+          << ".");
+    }
+    if (!cells.empty())
+    {
+      vtkWarningWithObjectMacro(self, "Cell arrays without one tuple per cell ("
+          << input->GetNumberOfCells() << ") are left out: " << cells << ".");
+    }
   }
-  if (!cells.empty())
-  {
-    vtkWarningWithObjectMacro(self, "Cell arrays without one tuple per cell ("
-        << input->GetNumberOfCells() << ") are left out: "
-        << shapesplines::describeArrays(cd, cells) << ".");
-  }
-}
+
+  vtkNew<vtkPointData> Points;
+  vtkNew<vtkCellData> Cells;
+};
 
 /// Fits the lines in parallel (curve, audit, sampling plan); a line that
 /// fails keeps why in its Error. Progress from 0 to 0.8.
@@ -682,12 +685,12 @@ std::vector<shapesplines::SpanParameter> ShapeParameterNames(
  */
 struct SampleOutput
 {
-  SampleOutput(vtkPointData* input, vtkIdType inputPoints, const std::vector<LineWork>& lines,
+  SampleOutput(vtkPointData* input, const std::vector<LineWork>& lines,
     const std::vector<size_t>& kept, std::vector<vtkIdType> firstSample,
     const std::vector<shapesplines::SpanParameter>& parameterNames)
     : FirstSample(std::move(firstSample))
     , Size(FirstSample.back())
-    , Carried(input, inputPoints, Size)
+    , Carried(input, Size)
     , Curvature(NewArray(names::Curvature, 1, Size))
     , Torsion(NewArray(names::Torsion, 1, Size))
     , Tangent(NewArray(names::Tangent, 3, Size))
@@ -993,19 +996,10 @@ struct LineArrays
 };
 
 /// Per-line cell data: the input cells' (connected points have none), then ours.
-void WriteCellData(vtkPolyData* input, vtkPolyData* output, const InputLines& gathered,
+void WriteCellData(vtkCellData* inCD, vtkPolyData* output, const InputLines& gathered,
   const std::vector<size_t>& kept, const std::vector<shapesplines::SpanParameter>& parameterNames)
 {
   const auto lineCount = static_cast<vtkIdType>(kept.size());
-  // The input's cell arrays but those without a tuple per cell (a damaged
-  // file's, reported by ReportMisfitArrays).
-  vtkNew<vtkCellData> inCD;
-  inCD->ShallowCopy(input->GetCellData());
-  const std::vector<int> misfits = shapesplines::misfitArrays(inCD, input->GetNumberOfCells());
-  for (auto a = misfits.rbegin(); a != misfits.rend(); ++a)
-  {
-    inCD->RemoveArray(*a);
-  }
   vtkCellData* outCD = output->GetCellData();
   if (!gathered.Connected)
   {
@@ -1107,21 +1101,20 @@ int vtkShapeSplineFilter::RequestData(
 int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
 {
   // Gather the lines serially; fit them in parallel (curve, audit, sampling plan).
-  std::optional<InputLines> gathered =
-    GatherInputLines(this, input, this->ConnectPoints, this->LineIdArrayName);
+  const ReadableArrays readable(this, input);
+  std::optional<InputLines> gathered = GatherInputLines(
+    this, input, readable.Points, this->ConnectPoints, this->LineIdArrayName);
   if (!gathered)
   {
     return 1; // reported: the output is empty
   }
   std::vector<LineWork>& lines = gathered->Lines;
-  ReportMisfitArrays(this, input);
 
   const shapesplines::CurveBuilder build = [this](const shapesplines::FitContext& context) {
     return this->BuildCurve(context);
   };
   vtkDataArray* pointValues =
-    PointValuesArray(this, input->GetPointData(), input->GetNumberOfPoints(),
-      this->GetPointValuesArrayInUse());
+    PointValuesArray(this, readable.Points, this->GetPointValuesArrayInUse());
   FitInParallel(this, lines, input->GetPoints(), pointValues, this->BuildFitOptions(input), build);
   if (this->GetAbortExecute())
   {
@@ -1139,8 +1132,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1;
   }
   const auto parameterNames = ShapeParameterNames(lines, kept);
-  SampleOutput samples(input->GetPointData(), input->GetNumberOfPoints(), lines, kept,
-    std::move(firstSample), parameterNames);
+  SampleOutput samples(readable.Points, lines, kept, std::move(firstSample), parameterNames);
   WriteSamplesInParallel(this, lines, kept, input->GetPoints(), samples);
   if (this->GetAbortExecute())
   {
@@ -1149,7 +1141,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
   this->UpdateProgress(0.95);
   ReportCurvatureSpikes(this, lines, kept);
   samples.AddTo(output, this->VMTKArrayNames);
-  WriteCellData(input, output, *gathered, kept, parameterNames);
+  WriteCellData(readable.Cells, output, *gathered, kept, parameterNames);
   // The fits freed in parallel, not one after another when the lines go
   // (4000 quintic fits of 50 points: ~30 ms on one thread).
   vtkSMPTools::For(0, static_cast<vtkIdType>(lines.size()), [&](vtkIdType begin, vtkIdType end) {

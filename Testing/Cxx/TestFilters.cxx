@@ -1745,6 +1745,23 @@ vtkSmartPointer<vtkPolyData> TwoTracksAsLines()
 }
 } // namespace
 
+TEST(ConnectPoints, ALineIdArrayOneTupleShortIsNotRead)
+{
+  // Guessed (Track) it is left out: one line of every point; named, an error.
+  const auto damaged = WithShortArray(TwoTracksAsPoints(false), "Track");
+  const FilterRun guessed = RunCubic(damaged);
+  EXPECT_EQ(CountMessages(guessed.Warnings, { "Point arrays without one tuple per point", "Track (39 tuples)" }), 1)
+    << Joined(guessed.Warnings);
+  EXPECT_EQ(guessed.Output->GetNumberOfLines(), 1);
+  vtkNew<vtkCubicSplineFilter> named;
+  named->SetLineIdArrayName("Track");
+  named->SetInputData(damaged);
+  const FilterRun refused = UpdateChecked(damaged, named, { named });
+  EXPECT_EQ(CountMessages(refused.Errors, { "'Track' with one tuple per point", "nothing fitted" }), 1)
+    << Joined(refused.Errors);
+  EXPECT_EQ(refused.Output->GetNumberOfPoints(), 0);
+}
+
 TEST(ConnectPoints, PointsInOrderBecomeTheLinesTheirIdsName)
 {
   const FilterRun lines = RunCubic(TwoTracksAsLines());

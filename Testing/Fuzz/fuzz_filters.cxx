@@ -28,7 +28,8 @@
 //   bytes        per point, the per-point array's value Values[b % 16]
 //   byte         damage: bit 0 an input cell array, bit 1 one tuple short; bit 2
 //                the curve given to the analysis and the comb with its Curvature
-//                array one tuple short, bit 3 its Tangent array of 2 components
+//                array one tuple short, bit 3 its Tangent array of 2 components; bit 4
+//                the per-point array named as the line id array (Connect Points)
 //
 // FUZZ_FILTERS_VERBOSE=1 prints each decoded input (to describe a reproducer).
 #define FUZZ_TARGET_NAME "fuzz_filters"
@@ -307,6 +308,7 @@ vtkSmartPointer<vtkShapeSplineFilter> makeFilter(const Input& input, bool& appro
       break;
     }
   }
+  filter->SetLineIdArrayName((input.Damage & 16) ? PerPointArray : nullptr);
   filter->SetClosed(input.flag(0));
   filter->SetParameterization(input.Kinds % 3);
   filter->SetNumberOfThreads(input.flag(7) ? 2 : 1);
