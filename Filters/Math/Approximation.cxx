@@ -1,5 +1,6 @@
 #include "Approximation.h"
 
+#include "ExtendedIndex.h"
 #include "SparseSolve.h"
 
 #include <Eigen/SparseCholesky>
@@ -106,25 +107,15 @@ QuinticFit::QuinticFit(const std::vector<double>& knots, bool closed)
 {
   // The full knot vector: five more beyond each end, repeated (open: a
   // clamped quintic) or continued by the period (closed).
-  const double period = this->Last - this->First;
   for (int j = -Degree; j <= this->Spans + Degree; ++j)
   {
-    if (!closed)
-    {
-      this->T.push_back(knots[std::clamp(j, 0, this->Spans)]);
-      continue;
-    }
-    // Whole periods before or after j (more than one when there are fewer
-    // spans than the degree).
-    const int wraps = j < 0 ? -((this->Spans - 1 - j) / this->Spans)
-                            : (j > this->Spans ? (j - 1) / this->Spans : 0);
-    this->T.push_back(knots[j - wraps * this->Spans] + wraps * period);
+    this->T.push_back(closed ? periodicKnot(knots, j) : knots[std::clamp(j, 0, this->Spans)]);
   }
 }
 
 int QuinticFit::unknown(int j) const
 {
-  return this->Closed ? ((j % this->Spans) + this->Spans) % this->Spans : j;
+  return this->Closed ? wrapIndex(j, this->Spans) : j;
 }
 
 int QuinticFit::locate(double u) const
@@ -506,8 +497,7 @@ std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
 {
   const int spans = static_cast<int>(knots.size()) - 1;
   const int k = closed ? spans : spans + 1; // a closed polygon's last vertex is its first
-  Triplets normal;
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(k, 3);
+  NormalEquations normal(k);
   for (size_t j = 0; j < points.size(); ++j)
   {
     const int span = std::clamp(
@@ -516,16 +506,9 @@ std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
     const double w = (u[j] - knots[span]) / (knots[span + 1] - knots[span]);
     const double hat[2] = { 1.0 - w, w };
     const int vertex[2] = { span, (span + 1) % k };
-    for (int a = 0; a < 2; ++a)
-    {
-      for (int b = 0; b < 2; ++b)
-      {
-        normal.emplace_back(vertex[a], vertex[b], hat[a] * hat[b]);
-      }
-      rhs.row(vertex[a]) += hat[a] * points[j].transpose();
-    }
+    normal.add(vertex, hat, 2, points[j]);
   }
-  const Eigen::MatrixX3d solution = solveSparse(k, normal, rhs);
+  const Eigen::MatrixX3d solution = normal.solve();
   std::vector<Vec3> vertices(k);
   for (int i = 0; i < k; ++i)
   {

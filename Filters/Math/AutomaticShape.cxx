@@ -1,5 +1,7 @@
 #include "AutomaticShape.h"
 
+#include "ExtendedIndex.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -132,7 +134,7 @@ private:
   {
     if (this->Reference.Closed)
     {
-      return ((j % this->Spans) + this->Spans) % this->Spans;
+      return wrapIndex(j, this->Spans);
     }
     return j >= 0 && j < this->Spans ? j : -1;
   }

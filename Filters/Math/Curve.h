@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -30,6 +31,27 @@ struct SpanParameter
   std::vector<double> Values; ///< one per span
   bool CellSummaryIsMaximum = true;
 };
+
+/// (1 - v)^e for v in [0, 1]: through log1p(-v) where 1 - v would round
+/// (v < 1/2), so that degrees and exponents in the hundreds do not multiply
+/// that rounding.
+inline double complementPower(double v, double e)
+{
+  return v < 0.5 ? std::exp(e * std::log1p(-v)) : std::pow(1.0 - v, e);
+}
+
+/// Derivatives in a span's local variable t = (x - x_j) / h made derivatives
+/// in x: the m-th divided by h^m, m = 1..order.
+template <class Values>
+void scaleDerivatives(Values& values, double h, int order)
+{
+  double scale = 1.0;
+  for (int m = 1; m <= order; ++m)
+  {
+    scale /= h;
+    values[m] *= scale;
+  }
+}
 
 /// The power-form coefficients a_k (p(u) = sum a_k u^k) of the Bezier curve
 /// with points b on [0, 1]: a_k = C(n, k) sum_i (-1)^(k-i) C(k, i) b_i, the

@@ -2,6 +2,7 @@
 
 #include "Approximation.h"
 #include "CubicSpline.h"
+#include "ExtendedIndex.h"
 
 #include <algorithm>
 #include <cmath>
@@ -87,7 +88,7 @@ CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& 
     {
       if (reference.Closed || (k >= 0 && k < spans))
       {
-        longest = std::max(longest, reference.segment(((k % spans) + spans) % spans).norm());
+        longest = std::max(longest, reference.segment(wrapIndex(k, spans)).norm());
       }
     }
     this->LocalLength[j] = longest > 0.0 ? longest : 1.0;

@@ -92,11 +92,11 @@ Jet kernel(SpaceKind kind, double p, double t, double fp, int order)
     kind == SpaceKind::Polynomial || (kind != SpaceKind::VariableDegree && p < NegligibleTension);
   if (cubic || kind == SpaceKind::VariableDegree)
   {
-    // (1 - t)^k and its derivatives, k >= 3: one pow for s^(k-3), the rest by
-    // products; the fourth derivative only when asked (it vanishes for k = 3).
+    // (1 - t)^k and its derivatives, k >= 3: one power for s^(k-3), the rest
+    // by products; the fourth derivative only when asked (it vanishes for k = 3).
     const double k = cubic ? 3.0 : p;
     const double s = 1.0 - t;
-    const double base = k == 3.0 ? 1.0 : std::pow(s, k - 3.0);
+    const double base = k == 3.0 ? 1.0 : complementPower(t, k - 3.0);
     const double powers[4] = { base * s * s * s, base * s * s, base * s, base };
     Jet u{};
     double coefficient = 1.0;
@@ -105,7 +105,7 @@ Jet kernel(SpaceKind kind, double p, double t, double fp, int order)
       u[m] = coefficient * powers[m];
       coefficient *= -(k - m);
     }
-    u[4] = order >= 4 && coefficient != 0.0 ? coefficient * std::pow(s, k - 4.0) : 0.0;
+    u[4] = order >= 4 && coefficient != 0.0 ? coefficient * complementPower(t, k - 4.0) : 0.0;
     return u;
   }
   const double x = p * (1.0 - t);
@@ -348,12 +348,11 @@ Derivatives GeneralizedCubicSpline::evaluateOnSpan(int span, double x, int order
   const Jet v = this->Kernels[span].v(t, order);
   Derivatives out;
   out.fill(Vec3::Zero());
-  double scale = 1.0; // h^-m: derivatives with respect to x
   for (int m = 0; m <= order; ++m)
   {
-    out[m] = scale * (u[m] * c + v[m] * d);
-    scale /= h;
+    out[m] = u[m] * c + v[m] * d;
   }
+  scaleDerivatives(out, h, order);
   out[0] += a + t * b;
   if (order >= 1)
   {

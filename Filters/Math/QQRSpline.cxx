@@ -1,6 +1,7 @@
 #include "QQRSpline.h"
 
 #include "AutomaticShape.h"
+#include "ExtendedIndex.h"
 #include "SparseSolve.h"
 
 #include <algorithm>
@@ -338,12 +339,7 @@ Jet QQRBSplineBasis::value(int i, double u, int order, int span) const
   }
   const double h = this->H[span];
   Jet out = this->piece(i, span - i, (u - this->Knots[span]) / h, order);
-  double scale = 1.0;
-  for (double& value : out)
-  {
-    value *= scale;
-    scale /= h;
-  }
+  scaleDerivatives(out, h, MaxDerivativeOrder);
   return out;
 }
 
@@ -461,15 +457,8 @@ private:
   /// h_i of the paper: knot u_i is t_{i-2}.
   double H(int i) const
   {
-    int j = i - 2;
-    const int spans = this->spans();
-    if (this->Closed)
-    {
-      return this->Dh[((j % spans) + spans) % spans];
-    }
     // Beyond the ends the intervals mirror the ones inside (decision).
-    j = j < 0 ? -1 - j : (j >= spans ? 2 * spans - 1 - j : j);
-    return this->Dh[std::clamp(j, 0, spans - 1)];
+    return this->Dh[extendedIndex(i - 2, this->spans(), this->Closed, Beyond::MirrorIntervals)];
   }
   double mu(int i) const { return this->H(i) / (this->H(i) + this->H(i + 1)); }
   double ups(int i) const { return this->H(i + 1) / (this->H(i) + this->H(i + 1)); }
@@ -479,7 +468,7 @@ private:
     int j = i - 1;
     if (this->Closed)
     {
-      j = ((j % this->Points) + this->Points) % this->Points;
+      j = wrapIndex(j, this->Points);
     }
     return values.empty() || j < 0 || j >= this->Points ? std::numeric_limits<double>::quiet_NaN()
                                                         : values[j];
@@ -568,7 +557,7 @@ std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(dh.size());
   const int unknowns = closed ? n : n + 2;
-  auto column = [&](int j) { return closed ? ((j % n) + n) % n : j + 1; };
+  auto column = [&](int j) { return closed ? wrapIndex(j, n) : j + 1; };
   Triplets entries;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
   auto addRow = [&](int row, int k, const Eigen::Vector4d& weights, double sign) {
@@ -674,9 +663,9 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   auto P = [&](int j) -> const Vec3& {
     if (!control.empty())
     {
-      return closed ? control[((j % n) + n) % n] : control[j + 1];
+      return closed ? control[wrapIndex(j, n)] : control[j + 1];
     }
-    return closed ? points[((j % n) + n) % n] : points[std::clamp(j, 0, n - 1)];
+    return points[extendedIndex(j, n, closed)];
   };
   spline.Exponents = std::move(exponents);
   spline.KnotShape = geometry.knotShape();
@@ -728,12 +717,7 @@ Derivatives QQRSpline::evaluateOnSpan(int span, double x, int order) const
     }
     out[0] += e[2];
   }
-  double scale = 1.0; // h^-m: derivatives with respect to the curve parameter
-  for (int m = 1; m <= order; ++m)
-  {
-    scale /= h;
-    out[m] *= scale;
-  }
+  scaleDerivatives(out, h, order);
   return out;
 }
 

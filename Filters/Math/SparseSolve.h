@@ -22,6 +22,46 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 Eigen::MatrixX3d solveSparse(int n, const Triplets& entries, const Eigen::MatrixX3d& rhs,
   double* conditionEstimate = nullptr);
 
+/**
+ * The normal equations B^T W B X = B^T W P of a weighted least-squares fit,
+ * gathered one row of B at a time: its nonzero entries b[a] in columns
+ * columns[a] (a column met twice adds up, as a closed curve's wrapped basis
+ * functions do), the point it fits and the row's weight.
+ */
+class NormalEquations
+{
+public:
+  explicit NormalEquations(int unknowns)
+    : Unknowns(unknowns)
+    , Rhs(Eigen::MatrixX3d::Zero(unknowns, 3))
+  {
+  }
+
+  template <class Entries>
+  void add(const int* columns, const Entries& b, int count, const Eigen::Vector3d& point, double weight = 1.0)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      for (int j = 0; j < count; ++j)
+      {
+        this->Entries.emplace_back(columns[i], columns[j], weight * b[i] * b[j]);
+      }
+      this->Rhs.row(columns[i]) += weight * b[i] * point.transpose();
+    }
+  }
+
+  /// X, one column per coordinate; see solveSparse.
+  Eigen::MatrixX3d solve(double* conditionEstimate = nullptr) const
+  {
+    return solveSparse(this->Unknowns, this->Entries, this->Rhs, conditionEstimate);
+  }
+
+private:
+  int Unknowns;
+  Triplets Entries;
+  Eigen::MatrixX3d Rhs;
+};
+
 /// Above this condition estimate, rounding can cost more than 1e-4 of relative
 /// accuracy (condition * machine epsilon): the solution is not to be trusted.
 constexpr double UntrustedCondition = 1e-4 / 2.220446049250313e-16;

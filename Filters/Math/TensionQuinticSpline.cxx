@@ -1,5 +1,6 @@
 #include "TensionQuinticSpline.h"
 
+#include "ExtendedIndex.h"
 #include "FitPolyline.h" // lowestKnotCount
 #include "SparseSolve.h"
 
@@ -17,16 +18,6 @@ namespace shapesplines
 {
 namespace
 {
-int floorDiv(int a, int n)
-{
-  return a >= 0 ? a / n : -((-a + n - 1) / n);
-}
-
-int wrap(int a, int n)
-{
-  return a - floorDiv(a, n) * n;
-}
-
 /// Weights on the de Boor points D_{i-3}..D_{i+3} of a point built at knot i.
 using Local = Eigen::Matrix<double, 7, 1>;
 using SpanWeights = TensionQuinticSpline::SpanWeights;
@@ -90,11 +81,11 @@ struct Lookup
   int spans() const { return static_cast<int>(this->H.size()); }
   int knot(int i) const
   {
-    return this->Closed ? wrap(i, this->spans()) : std::clamp(i, 0, this->spans());
+    return extendedIndex(i, this->Closed ? this->spans() : this->spans() + 1, this->Closed);
   }
   double h(int i) const
   {
-    return this->H[this->Closed ? wrap(i, this->spans()) : std::clamp(i, 0, this->spans() - 1)];
+    return this->H[extendedIndex(i, this->spans(), this->Closed)];
   }
   double g(int i) const { return this->P.Gamma[this->knot(i)]; }
   double l(int i) const { return this->P.Lambda[this->knot(i)]; }
@@ -248,13 +239,13 @@ Lookup lookup(const std::vector<double>& t, const QuinticParameters& parameters,
 /// Where the de Boor point of index m (from -2 for open curves) is stored.
 int storage(int m, int spans, bool closed)
 {
-  return closed ? wrap(m, spans) : m + 2;
+  return closed ? wrapIndex(m, spans) : m + 2;
 }
 
 /// Abscissa xi_m: closed curves add a period per turn.
 double abscissa(const std::vector<double>& xi, int m, int spans, bool closed, double period)
 {
-  return closed ? xi[wrap(m, spans)] + floorDiv(m, spans) * period : xi[m + 2];
+  return closed ? xi[wrapIndex(m, spans)] + floorDiv(m, spans) * period : xi[m + 2];
 }
 
 /// The rows of X or C at the ends of an open curve: first and second local
@@ -383,12 +374,11 @@ TensionQuinticSpline::TensionQuinticSpline(std::vector<double> knots, bool close
 std::vector<double> TensionQuinticSpline::grevilleAbscissae(const std::vector<double>& t, bool closed)
 {
   const int n = static_cast<int>(t.size()) - 1;
-  const double period = t.back() - t.front();
   // Parametric knot j: beyond the ends of open curves the end spacings repeat.
   auto knot = [&](int j) {
     if (closed)
     {
-      return t[wrap(j, n)] + floorDiv(j, n) * period;
+      return periodicKnot(t, j);
     }
     if (j < 0)
     {
@@ -760,8 +750,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   // The same X with any de Boor points: it maps the data parameters to spans and t.
   const TensionQuinticSpline shape = fromWeights(knots, abscissae.Xi,
     std::vector<Vec3>(unknowns, Vec3::Zero()), abscissae.Parameters, closed, weights);
-  Triplets normal;
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  NormalEquations normal(unknowns);
   for (size_t j = 0; j < points.size(); ++j)
   {
     const int span = shape.findSpan(u[j]);
@@ -778,17 +767,10 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     {
       column[m] = storage(span - 2 + m, n, closed);
     }
-    for (int a = 0; a < 6; ++a)
-    {
-      for (int b = 0; b < 6; ++b)
-      {
-        normal.emplace_back(column[a], column[b], row[a] * row[b]);
-      }
-      rhs.row(column[a]) += row[a] * points[j].transpose();
-    }
+    normal.add(column, row, 6, points[j]);
   }
   double condition = 1.0;
-  const Eigen::MatrixX3d solution = solveSparse(unknowns, normal, rhs, &condition);
+  const Eigen::MatrixX3d solution = normal.solve(&condition);
   std::vector<Vec3> deBoor(unknowns);
   for (int m = 0; m < unknowns; ++m)
   {

@@ -2,7 +2,7 @@
 
 #include "Approximation.h"
 #include "AutomaticShape.h"
-
+#include "ExtendedIndex.h"
 #include "SparseSolve.h"
 
 #include <algorithm>
@@ -25,7 +25,7 @@ double falling(double k, int n)
 }
 
 /// x^(e - n) for n = 0..5, x in [0, 1], e >= 5: one power, then products.
-/// oneMinus: x = 1 - v, raised through log1p(-v) where 1 - v would round.
+/// oneMinus: x = 1 - v (complementPower).
 std::array<double, 6> powers(double e, double v, bool oneMinus)
 {
   const double x = oneMinus ? 1.0 - v : v;
@@ -33,7 +33,7 @@ std::array<double, 6> powers(double e, double v, bool oneMinus)
   double base = 1.0;
   if (lowest != 0.0)
   {
-    base = oneMinus && v < 0.5 ? std::exp(lowest * std::log1p(-v)) : std::pow(x, lowest);
+    base = oneMinus ? complementPower(v, lowest) : std::pow(x, lowest);
   }
   std::array<double, 6> out;
   for (int n = 5; n >= 0; --n)
@@ -70,23 +70,10 @@ public:
   double degree(int i) const { return this->Parameters.Degree[this->knot(i)]; }
 
 private:
-  int span(int j) const
-  {
-    if (this->Closed)
-    {
-      return ((j % this->Spans) + this->Spans) % this->Spans;
-    }
-    const int mirrored = j < 0 ? -j - 1 : (j >= this->Spans ? 2 * this->Spans - 1 - j : j);
-    return std::clamp(mirrored, 0, this->Spans - 1);
-  }
+  int span(int j) const { return extendedIndex(j, this->Spans, this->Closed, Beyond::MirrorIntervals); }
   int knot(int i) const
   {
-    if (this->Closed)
-    {
-      return ((i % this->Spans) + this->Spans) % this->Spans;
-    }
-    const int mirrored = i < 0 ? -i : (i > this->Spans ? 2 * this->Spans - i : i);
-    return std::clamp(mirrored, 0, this->Spans);
+    return extendedIndex(i, this->Closed ? this->Spans : this->Spans + 1, this->Closed, Beyond::MirrorEntries);
   }
 
   const std::vector<double>& Knots;
@@ -324,7 +311,7 @@ VariableDegreeSpline VariableDegreeSpline::interpolate(const std::vector<Vec3>& 
   const int unknowns = closed ? spans : spans + 5;
   // Open: de Boor index j is unknown j + 2, and the data row of knot i is
   // row i + 2, so D_i sits on the diagonal; rows 0, 1 and the last two hold the ends.
-  auto column = [&](int j) { return closed ? ((j % spans) + spans) % spans : j + 2; };
+  auto column = [&](int j) { return closed ? wrapIndex(j, spans) : j + 2; };
   const int offset = closed ? 0 : 2;
   Triplets entries;
   Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
@@ -396,21 +383,17 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
   // are D_0..D_m (the polygon limit of Theorem 4 then ends at psi's ends);
   // free ones, all m + 5; a closed curve's D_j wrap around.
   auto column = [&](int j) {
-    return closed ? ((j % spans) + spans) % spans : (clampedEnds ? std::clamp(j, 0, spans) : j + 2);
+    return closed ? wrapIndex(j, spans) : (clampedEnds ? std::clamp(j, 0, spans) : j + 2);
   };
   const int unknowns = closed || clampedEnds ? static_cast<int>(knotCount) : spans + 5;
-  Triplets normal;
-  Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Zero(unknowns, 3);
+  NormalEquations normal(unknowns);
   auto addSquare = [&](const Weights& w, int span, double weight, const Vec3& target) {
+    int columns[6];
     for (int a = 0; a < 6; ++a)
     {
-      const int row = column(deBoorIndex(span, a));
-      for (int b = 0; b < 6; ++b)
-      {
-        normal.emplace_back(row, column(deBoorIndex(span, b)), weight * w[a] * w[b]);
-      }
-      rhs.row(row) += weight * w[a] * target.transpose();
+      columns[a] = column(deBoorIndex(span, a));
     }
+    normal.add(columns, w, 6, target, weight);
   };
   for (size_t j = 0; j < points.size(); ++j)
   {
@@ -432,7 +415,7 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
   VariableDegreeSpline spline(knots, closed);
   spline.Parameters = parameters;
   const std::vector<Vec3> free =
-    toPoints(solveSparse(unknowns, normal, rhs, &spline.ConditionEstimate));
+    toPoints(normal.solve(&spline.ConditionEstimate));
   for (int j = closed ? 0 : -2; j <= (closed ? spans - 1 : spans + 2); ++j)
   {
     spline.DeBoor.push_back(free[column(j)]);
@@ -450,12 +433,7 @@ Derivatives VariableDegreeSpline::evaluateOnSpan(int span, double u, int order) 
   {
     // The quintic Bernstein basis: the span's power form.
     out = powerDerivatives(this->QuinticPower[span], v, order, Vec3(Vec3::Zero()));
-    double scale = 1.0;
-    for (int r = 1; r <= order; ++r)
-    {
-      scale /= h;
-      out[r] *= scale;
-    }
+    scaleDerivatives(out, h, order);
     return out;
   }
   const int knots = static_cast<int>(this->Parameters.Degree.size());
