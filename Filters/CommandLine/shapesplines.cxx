@@ -1186,6 +1186,14 @@ int Choice(Arguments& args, const std::string& option, const std::string& fallba
     "--" + option + " must be " + names + (family.empty() ? "" : " for " + family));
 }
 
+/// Sets a filter's Property from the option --name when given: its default
+/// and the range accepted are the filter's own (its vtkSetClampMacro bounds),
+/// so the command line cannot drift from the filters.
+#define SET_FROM_OPTION(args, filter, name, Property)                                              \
+  (filter)->Set##Property(static_cast<decltype((filter)->Get##Property())>((args).Number((name),   \
+    (filter)->Get##Property(), (filter)->Get##Property##MinValue(),                                \
+    (filter)->Get##Property##MaxValue())))
+
 // Each family's filter, configured from its options; the options are read in a fixed
 // order, so that of two bad options the same one is reported.
 
@@ -1208,8 +1216,8 @@ vtkSmartPointer<vtkShapeSplineFilter> GeneralizedCubicFilter(Arguments& args)
       { "trigonometric", vtkGeneralizedCubicSplineFilter::TRIGONOMETRIC },
       { "variable-degree", vtkGeneralizedCubicSplineFilter::VARIABLE_DEGREE } }));
   filter->SetAutomatic(!args.Flag("fixed"));
-  filter->SetTension(args.Number("tension", 0.0, 0.0, 1000.0));
-  filter->SetMaxTension(args.Number("max-tension", 1000.0, 0.0, 1000.0));
+  SET_FROM_OPTION(args, filter, "tension", Tension);
+  SET_FROM_OPTION(args, filter, "max-tension", MaxTension);
   return filter;
 }
 
@@ -1221,10 +1229,10 @@ vtkSmartPointer<vtkShapeSplineFilter> TensionQuinticFilter(Arguments& args)
   filter->SetMode(Choice(args, "mode", "interpolate",
     { { "interpolate", vtkTensionQuinticSplineFilter::INTERPOLATE },
       { "approximate", vtkTensionQuinticSplineFilter::APPROXIMATE } }));
-  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  SET_FROM_OPTION(args, filter, "knots", NumberOfKnots);
   filter->SetAutomatic(!args.Flag("fixed"));
-  filter->SetGamma(args.Number("gamma", 1.0, 1e-6, 1.999));
-  filter->SetLambda(args.Number("lambda", 1.0, 1e-6, 1e6));
+  SET_FROM_OPTION(args, filter, "gamma", Gamma);
+  SET_FROM_OPTION(args, filter, "lambda", Lambda);
   return filter;
 }
 
@@ -1240,11 +1248,11 @@ vtkSmartPointer<vtkShapeSplineFilter> VariableDegreeFilter(Arguments& args)
     { { "natural", vtkVariableDegreeSplineFilter::NATURAL },
       { "clamped", vtkVariableDegreeSplineFilter::CLAMPED } },
     "vdps"));
-  filter->SetNumberOfKnots(static_cast<int>(args.Number("knots", 0, 0, 1e6)));
+  SET_FROM_OPTION(args, filter, "knots", NumberOfKnots);
   filter->SetAutomatic(!args.Flag("fixed"));
-  filter->SetDegree(args.Number("degree", 5.0, 5.0, 1000.0));
-  filter->SetMaxDegree(args.Number("max-degree", 1000.0, 5.0, 1000.0));
-  filter->SetLambda(args.Number("lambda", 1.0, 0.001, 10.0));
+  SET_FROM_OPTION(args, filter, "degree", Degree);
+  SET_FROM_OPTION(args, filter, "max-degree", MaxDegree);
+  SET_FROM_OPTION(args, filter, "lambda", Lambda);
   return filter;
 }
 
@@ -1256,13 +1264,13 @@ vtkSmartPointer<vtkShapeSplineFilter> QQRFilter(Arguments& args)
       { "approximate", vtkQQRSplineFilter::APPROXIMATE } },
     "qqr"));
   filter->SetAutomatic(!args.Flag("fixed"));
-  filter->SetAlpha(args.Number("alpha", 4.0, 2.0, 200.0));
-  filter->SetBeta(args.Number("beta", 4.0, 2.0, 200.0));
-  filter->SetMaxAlpha(args.Number("max-alpha", 200.0, 2.0, 200.0));
+  SET_FROM_OPTION(args, filter, "alpha", Alpha);
+  SET_FROM_OPTION(args, filter, "beta", Beta);
+  SET_FROM_OPTION(args, filter, "max-alpha", MaxAlpha);
   if (args.Flag("z"))
   {
     filter->SetLocalParameters(vtkQQRSplineFilter::CUSTOM);
-    filter->SetZ(args.Number("z", 0.5, 0.0, 1.0));
+    SET_FROM_OPTION(args, filter, "z", Z);
   }
   return filter;
 }
@@ -1300,8 +1308,8 @@ int Fit(Arguments& args)
   filter->SetCorrectParameters(!args.Flag("keep-parameters"));
   filter->SetClosed(args.Flag("closed"));
   filter->SetVMTKArrayNames(args.Flag("vmtk-names"));
-  filter->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
-  filter->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  SET_FROM_OPTION(args, filter, "data-tolerance", DataShapeTolerance);
+  SET_FROM_OPTION(args, filter, "curve-tolerance", CurveShapeTolerance);
   const bool byLength = !args.Value("arc-length", "").empty();
   if (byLength && !args.Value("samples", "").empty())
   {
@@ -1318,7 +1326,7 @@ int Fit(Arguments& args)
   }
   else
   {
-    filter->SetNumberOfSubdivisions(static_cast<int>(args.Number("samples", 10, 1, 100000)));
+    SET_FROM_OPTION(args, filter, "samples", NumberOfSubdivisions);
   }
   const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
@@ -1530,8 +1538,8 @@ int Audit(Arguments& args)
   }
   vtkNew<vtkPolylineShapeAnalysis> analysis;
   analysis->SetClosed(args.Flag("closed"));
-  analysis->SetDataShapeTolerance(args.Number("data-tolerance", 1e-6, 0.0, 1.0));
-  analysis->SetCurveShapeTolerance(args.Number("curve-tolerance", 1e-3, 0.0, 1.0));
+  SET_FROM_OPTION(args, analysis, "data-tolerance", DataShapeTolerance);
+  SET_FROM_OPTION(args, analysis, "curve-tolerance", CurveShapeTolerance);
   const std::string lineColumn = args.Value("line-column", "");
   const bool quiet = args.Flag("quiet");
   args.RejectUnused();
