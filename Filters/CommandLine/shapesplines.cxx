@@ -49,6 +49,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <unistd.h>
 #include <vector>
 
@@ -1186,13 +1187,25 @@ int Choice(Arguments& args, const std::string& option, const std::string& fallba
     "--" + option + " must be " + names + (family.empty() ? "" : " for " + family));
 }
 
+/// The option --name's value in [lo, hi], current when not given; a whole
+/// number for an integer property.
+template <class T>
+T OptionValue(Arguments& args, const std::string& name, T current, T lo, T hi)
+{
+  const double value = args.Number(name, current, lo, hi);
+  if (std::is_integral<T>::value && value != std::floor(value))
+  {
+    throw UsageError("--" + name + " must be a whole number, not '" + args.Value(name, "") + "'");
+  }
+  return static_cast<T>(value);
+}
+
 /// Sets a filter's Property from the option --name when given: its default
 /// and the range accepted are the filter's own (its vtkSetClampMacro bounds),
 /// so the command line cannot drift from the filters.
 #define SET_FROM_OPTION(args, filter, name, Property)                                              \
-  (filter)->Set##Property(static_cast<decltype((filter)->Get##Property())>((args).Number((name),   \
-    (filter)->Get##Property(), (filter)->Get##Property##MinValue(),                                \
-    (filter)->Get##Property##MaxValue())))
+  (filter)->Set##Property(OptionValue((args), (name), (filter)->Get##Property(),                   \
+    (filter)->Get##Property##MinValue(), (filter)->Get##Property##MaxValue()))
 
 // Each family's filter, configured from its options; the options are read in a fixed
 // order, so that of two bad options the same one is reported.
