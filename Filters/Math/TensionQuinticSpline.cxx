@@ -661,13 +661,19 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   }
   double condition = 1.0;
   const Eigen::MatrixX3d solution = solveSparse(unknowns, a, rhs, &condition);
-  std::vector<Vec3> deBoor(unknowns);
-  for (int m = 0; m < unknowns; ++m)
+  return fromSolution(knots, abscissae, solution, condition, closed);
+}
+
+TensionQuinticSpline TensionQuinticSpline::fromSolution(const std::vector<double>& t,
+  const Abscissae& abscissae, const Eigen::MatrixX3d& solution, double condition, bool closed)
+{
+  std::vector<Vec3> deBoor(solution.rows());
+  for (Eigen::Index m = 0; m < solution.rows(); ++m)
   {
     deBoor[m] = solution.row(m).transpose();
   }
   TensionQuinticSpline spline =
-    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
+    fromWeights(t, abscissae.Xi, deBoor, abscissae.Parameters, closed, abscissae.Weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.ConditionEstimate = std::max(condition, abscissae.Condition);
   return spline;
@@ -771,16 +777,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   }
   double condition = 1.0;
   const Eigen::MatrixX3d solution = normal.solve(&condition);
-  std::vector<Vec3> deBoor(unknowns);
-  for (int m = 0; m < unknowns; ++m)
-  {
-    deBoor[m] = solution.row(m).transpose();
-  }
-  TensionQuinticSpline spline =
-    fromWeights(knots, abscissae.Xi, deBoor, abscissae.Parameters, closed, weights);
-  spline.Recoveries = abscissae.Recoveries;
-  spline.ConditionEstimate = std::max(condition, abscissae.Condition);
-  return spline;
+  return fromSolution(knots, abscissae, solution, condition, closed);
 }
 
 std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const

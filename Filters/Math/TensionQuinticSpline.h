@@ -131,6 +131,10 @@ public:
 private:
   TensionQuinticSpline(std::vector<double> knots, bool closed);
   /// fromControlPoints with the construction's weights already computed.
+  /// The spline of the de Boor points solved for on abscissae (one per row
+  /// of solution), its condition the larger of the two systems'.
+  static TensionQuinticSpline fromSolution(const std::vector<double>& t, const Abscissae& abscissae,
+    const Eigen::MatrixX3d& solution, double condition, bool closed);
   static TensionQuinticSpline fromWeights(const std::vector<double>& t,
     const std::vector<double>& xi, const std::vector<Vec3>& points,
     const QuinticParameters& parameters, bool closed, const std::vector<SpanWeights>& weights);
