@@ -1,6 +1,6 @@
 /**
  * @class   vtkPolylineShapeAnalysis
- * @brief   the discrete shape of polylines (paper 001, Definition 1) and,
+ * @brief   the discrete shape of polylines (Costantini & Manni, Def. 1) and,
  *          given a curve fitted to them, where the curve breaks that shape
  *
  * Input 0: polylines (the data). For each line, after merging consecutive

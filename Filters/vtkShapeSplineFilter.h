@@ -14,7 +14,7 @@
  *   seam point, its cell does),
  * - computes the unit Frenet frame, curvature and signed torsion from the
  *   spline's exact derivatives, and audits the curve against the discrete
- *   shape of the data (paper 001, Definition 1).
+ *   shape of the data (Costantini & Manni, Definition 1).
  *
  * Output point arrays: Curvature, Torsion, Tangent, Normal, Binormal,
  * Parameter, ArcLength, SpanIndex, the family's shape parameters per span
