@@ -66,7 +66,8 @@ bool hasNormal(const std::vector<FrenetFrame>& frames, const std::vector<double>
 } // namespace
 
 CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
-  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+  bool keepSampleCurvatures)
   : Auditor(reference, shape, tolerances)
   , Subdivisions(std::max(subdivisions, 1))
   , CoordinateNoise(coordinateNoise)
@@ -76,7 +77,7 @@ CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& 
   , Speed(std::max(reference.numberOfSpans(), 0), 1.0)
   , Deviation(std::max(reference.numberOfSpans(), 0), 0.0)
   , LocalLength(std::max(reference.numberOfSpans(), 0), 1.0)
-  , SampleCurvatures(std::max(reference.numberOfSpans(), 0))
+  , SampleCurvatures(keepSampleCurvatures ? std::max(reference.numberOfSpans(), 0) : 0)
 {
   // The longest of a segment and its neighbours: how far a curve near the
   // polygon may stray from it there.
@@ -131,8 +132,13 @@ void CurveAuditor::audit(const Curve& curve, int j)
   };
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);
-  std::vector<double>& sampleCurvatures = this->SampleCurvatures[j];
-  sampleCurvatures.resize(subdivisions + 1);
+  // Subdivisions + 1 doubles a span, more than the curve holds: kept only when asked for.
+  std::vector<double>* sampleCurvatures =
+    this->SampleCurvatures.empty() ? nullptr : &this->SampleCurvatures[j];
+  if (sampleCurvatures)
+  {
+    sampleCurvatures->resize(subdivisions + 1);
+  }
   // Both ends of every span: torsion is one-sided at a knot (the third
   // derivative jumps), so each knot is audited from both sides, and the
   // audit, and the automatic modes driven by it, do not depend on the
@@ -146,7 +152,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
     sample.Flat = frames[k].Curvature <= thresholds[k];
     this->Auditor.add(sample);
     curvature = std::max(curvature, frames[k].Curvature);
-    sampleCurvatures[k] = frames[k].Curvature;
+    if (sampleCurvatures)
+    {
+      (*sampleCurvatures)[k] = frames[k].Curvature;
+    }
     speed = std::min(speed, values[k][1].norm());
     deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }

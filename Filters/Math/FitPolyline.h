@@ -175,8 +175,11 @@ private:
 class CurveAuditor
 {
 public:
+  /// keepSampleCurvatures: keep every sample's curvature (sampleCurvatures),
+  /// which only a bound on the change of curvature needs.
   CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
-    const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
+    const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+    bool keepSampleCurvatures = false);
 
   /// (Re-)audits span j of curve, forgetting what the span's samples found before.
   void audit(const Curve& curve, int span);
@@ -191,7 +194,7 @@ public:
   /// Largest distance of span j's samples from the reference's segment j,
   /// over the longest of that segment and its neighbours.
   double largestDeviation(int span) const { return this->Deviation[span]; }
-  /// The curvature at span j's samples, from its start to its end.
+  /// The curvature at span j's samples, from its start to its end (when kept).
   const std::vector<double>& sampleCurvatures(int span) const { return this->SampleCurvatures[span]; }
 
 private:
@@ -204,7 +207,7 @@ private:
   std::vector<double> Speed;
   std::vector<double> Deviation;
   std::vector<double> LocalLength;
-  std::vector<std::vector<double>> SampleCurvatures;
+  std::vector<std::vector<double>> SampleCurvatures; ///< per span, when kept
   // One span's samples, thresholds and frames, reused from span to span.
   std::vector<Derivatives> Values;
   std::vector<double> Thresholds;
