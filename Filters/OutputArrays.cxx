@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 
 namespace shapesplines
 {
@@ -22,41 +23,66 @@ void addArrays(vtkFieldData* data, std::initializer_list<vtkAbstractArray*> arra
 double typicalMagnitude(const double* first, const double* last)
 {
   // Selected by the bits of |v|, which order non-negative doubles as their
-  // values: a count per top 16 bits, then the rank among the values of the
-  // one bucket that holds it. The value a selection over all of them gives,
-  // without copying the samples (one serial pass where a copy and a full
-  // selection took ~50 ms on 2e6 samples).
-  constexpr int Shift = 48;
-  const auto bucket = [](double magnitude) {
+  // values: a count per 16 bits, from the top ones down, among the values
+  // whose bits above agree with the one holding the rank, until few enough
+  // are left to select among. The value a selection over all of them gives,
+  // without copying the samples (a copy and a full selection took ~50 ms on
+  // 2e6 samples) and in bounded memory (a crowded bucket is refined, not
+  // gathered: 1e7 samples of about one torsion would be).
+  constexpr int Digit = 16;
+  constexpr size_t FewValues = size_t(1) << 16;
+  const auto bitsOf = [](double value) {
     std::uint64_t bits;
+    const double magnitude = std::abs(value);
     std::memcpy(&bits, &magnitude, sizeof bits);
-    return static_cast<size_t>(bits >> Shift);
+    return bits;
   };
-  std::vector<size_t> counts(size_t(1) << (64 - Shift), 0);
-  size_t finite = 0;
-  for (const double* v = first; v != last; ++v)
-  {
-    if (std::isfinite(*v))
-    {
-      ++counts[bucket(std::abs(*v))];
-      ++finite;
-    }
-  }
-  if (finite == 0)
-  {
-    return 0.0;
-  }
-  auto rank = static_cast<size_t>(0.95 * (finite - 1));
+  std::vector<size_t> counts(size_t(1) << Digit);
+  std::uint64_t prefix = 0; // the top `decided` bits of the value sought
+  int decided = 0;
+  size_t rank = 0;
   size_t holding = 0;
-  while (rank >= counts[holding])
+  do
   {
-    rank -= counts[holding++];
+    const int shift = 64 - decided - Digit;
+    std::fill(counts.begin(), counts.end(), 0);
+    for (const double* v = first; v != last; ++v)
+    {
+      const std::uint64_t bits = bitsOf(*v);
+      if (std::isfinite(*v) && (decided == 0 || bits >> (64 - decided) == prefix))
+      {
+        ++counts[(bits >> shift) & (counts.size() - 1)];
+      }
+    }
+    if (decided == 0)
+    {
+      const size_t finite = std::accumulate(counts.begin(), counts.end(), size_t(0));
+      if (finite == 0)
+      {
+        return 0.0;
+      }
+      rank = static_cast<size_t>(0.95 * (finite - 1));
+    }
+    size_t bucket = 0;
+    while (rank >= counts[bucket])
+    {
+      rank -= counts[bucket++];
+    }
+    prefix = (prefix << Digit) | bucket;
+    decided += Digit;
+    holding = counts[bucket];
+  } while (holding > FewValues && decided < 64);
+  if (decided == 64)
+  {
+    double value; // every bit decided: the values left are all this one
+    std::memcpy(&value, &prefix, sizeof value);
+    return value;
   }
   std::vector<double> candidates;
-  candidates.reserve(counts[holding]);
+  candidates.reserve(holding);
   for (const double* v = first; v != last; ++v)
   {
-    if (std::isfinite(*v) && bucket(std::abs(*v)) == holding)
+    if (std::isfinite(*v) && bitsOf(*v) >> (64 - decided) == prefix)
     {
       candidates.push_back(std::abs(*v));
     }

@@ -35,7 +35,8 @@ public:
     , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise))
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
-        context.Options.AuditSubdivisions, context.CoordinateNoise)
+        context.Options.AuditSubdivisions, context.CoordinateNoise,
+        ladder.Bounds.CurvatureChange > 0.0)
     , Levels(this->Spans, 0)
     , Frozen(this->Spans, 0)
     , Stalls(this->Spans, 0)

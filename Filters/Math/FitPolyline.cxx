@@ -13,7 +13,7 @@ namespace shapesplines
 {
 namespace
 {
-/// The curvature indistinguishable from zero on a span (see flatCurvature).
+/// The curvature indistinguishable from zero on a span (see FitSampler).
 class FlatnessThreshold
 {
 public:
@@ -51,22 +51,24 @@ double toDataUnits(double perNormalisedLength, double scale)
   constexpr double largest = std::numeric_limits<double>::max();
   return std::isfinite(value) ? value : std::copysign(largest, perNormalisedLength);
 }
+
+/// Whether some sample of a block framed with these thresholds has a Frenet normal.
+bool hasNormal(const std::vector<FrenetFrame>& frames, const std::vector<double>& thresholds)
+{
+  for (size_t k = 0; k < frames.size(); ++k)
+  {
+    if (frames[k].Curvature > thresholds[k])
+    {
+      return true;
+    }
+  }
+  return false;
+}
 } // namespace
 
-std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
-  const CleanPolyline& data, double coordinateNoise)
-{
-  const FlatnessThreshold flat(curve, boundingBoxDiagonal(data.Points), coordinateNoise);
-  std::vector<double> thresholds(samples.size());
-  for (int k = 0; k < samples.size(); ++k)
-  {
-    thresholds[k] = flat(samples.Span[k], samples.Values[k][1]);
-  }
-  return thresholds;
-}
-
 CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
-  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise)
+  const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+  bool keepSampleCurvatures)
   : Auditor(reference, shape, tolerances)
   , Subdivisions(std::max(subdivisions, 1))
   , CoordinateNoise(coordinateNoise)
@@ -76,7 +78,7 @@ CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& 
   , Speed(std::max(reference.numberOfSpans(), 0), 1.0)
   , Deviation(std::max(reference.numberOfSpans(), 0), 0.0)
   , LocalLength(std::max(reference.numberOfSpans(), 0), 1.0)
-  , SampleCurvatures(std::max(reference.numberOfSpans(), 0))
+  , SampleCurvatures(keepSampleCurvatures ? std::max(reference.numberOfSpans(), 0) : 0)
 {
   // The longest of a segment and its neighbours: how far a curve near the
   // polygon may stray from it there.
@@ -131,8 +133,13 @@ void CurveAuditor::audit(const Curve& curve, int j)
   };
   double curvature = 0.0, speed = std::numeric_limits<double>::infinity(), deviation = 0.0;
   this->Auditor.forget(j);
-  std::vector<double>& sampleCurvatures = this->SampleCurvatures[j];
-  sampleCurvatures.resize(subdivisions + 1);
+  // Subdivisions + 1 doubles a span, more than the curve holds: kept only when asked for.
+  std::vector<double>* sampleCurvatures =
+    this->SampleCurvatures.empty() ? nullptr : &this->SampleCurvatures[j];
+  if (sampleCurvatures)
+  {
+    sampleCurvatures->resize(subdivisions + 1);
+  }
   // Both ends of every span: torsion is one-sided at a knot (the third
   // derivative jumps), so each knot is audited from both sides, and the
   // audit, and the automatic modes driven by it, do not depend on the
@@ -146,7 +153,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
     sample.Flat = frames[k].Curvature <= thresholds[k];
     this->Auditor.add(sample);
     curvature = std::max(curvature, frames[k].Curvature);
-    sampleCurvatures[k] = frames[k].Curvature;
+    if (sampleCurvatures)
+    {
+      (*sampleCurvatures)[k] = frames[k].Curvature;
+    }
     speed = std::min(speed, values[k][1].norm());
     deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
@@ -206,29 +216,130 @@ ShapeAudit FitContext::audit(
     this->Options.Progress);
 }
 
-SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress)
+FitSampler::FitSampler(const FittedPolyline& fit, long blockSamples)
+  : Fit(fit)
+  , Sampler(*fit.Spline, fit.Plan)
+  , BlockSamples(std::max(blockSamples, 1L))
+  , Blocks((Sampler.size() + BlockSamples - 1) / BlockSamples)
+  , Diagonal(boundingBoxDiagonal(fit.Data.Points))
 {
-  SampledCurve sampled;
-  CurveSamples& samples = sampled.Samples;
-  samples = sampleCurve(*fit.Spline, fit.Plan, progress);
-  sampled.Frames =
-    frenetFrames(samples.Values, flatCurvature(*fit.Spline, samples, fit.Data, fit.CoordinateNoise));
+}
+
+void FitSampler::sampleBlock(SampledCurve& block, long b, const ProgressCallback& progress) const
+{
+  const long first = b * this->BlockSamples;
+  this->Sampler.sample(
+    first, std::min(this->BlockSamples, this->Sampler.size() - first), block.Samples, progress);
+}
+
+void FitSampler::frame(SampledCurve& block, const FrameNeighbours& neighbours)
+{
+  const FlatnessThreshold flat(*this->Fit.Spline, this->Diagonal, this->Fit.CoordinateNoise);
+  const CurveSamples& samples = block.Samples;
+  this->Thresholds.resize(samples.size());
+  for (int k = 0; k < samples.size(); ++k)
+  {
+    this->Thresholds[k] = flat(samples.Span[k], samples.Values[k][1]);
+  }
+  frenetFrames(samples.Values, this->Thresholds, block.Frames, neighbours);
+}
+
+FrameNeighbours FitSampler::neighbours(long b) const
+{
+  FrameNeighbours around;
+  around.PreviousTangent = b > 0 ? &this->LastTangent : nullptr;
+  if (b > this->FirstDefinedBlock)
+  {
+    around.PreviousNormal = &this->LastNormal;
+  }
+  else if (b < this->FirstDefinedBlock)
+  {
+    around.NextNormal = &this->NextNormals[b];
+  }
+  return around;
+}
+
+void FitSampler::findLeadingNormals(const ProgressCallback& progress)
+{
+  // The curve framed at once transports its first normal back over the flat
+  // samples before it: find it, block by block forwards (a tangent can carry
+  // over), then carry it back block by block. Only a curve whose first block
+  // is flat pays this second sampling.
+  SampledCurve scan;
+  std::vector<Vec3> lastTangents{ this->Block.Frames.back().Tangent };
+  long b = 1;
+  for (; b < this->Blocks; ++b)
+  {
+    this->sampleBlock(scan, b, progress);
+    this->frame(scan, FrameNeighbours{ &lastTangents.back() });
+    if (hasNormal(scan.Frames, this->Thresholds))
+    {
+      break;
+    }
+    lastTangents.push_back(scan.Frames.back().Tangent);
+  }
+  if (b == this->Blocks)
+  {
+    return; // no normal anywhere: block 0's first tangent chose them all
+  }
+  this->FirstDefinedBlock = b;
+  this->NextNormals.resize(b);
+  this->NextNormals[b - 1] = scan.Frames.front().Normal;
+  for (long a = b - 1; a > 0; --a)
+  {
+    this->sampleBlock(scan, a, progress);
+    this->frame(scan, FrameNeighbours{ &lastTangents[a - 1], nullptr, &this->NextNormals[a] });
+    this->NextNormals[a - 1] = scan.Frames.front().Normal;
+  }
+}
+
+bool FitSampler::next(const ProgressCallback& progress)
+{
+  if (this->Next == this->Blocks)
+  {
+    return false;
+  }
+  const long b = this->Next++;
+  SampledCurve& block = this->Block;
+  CurveSamples& samples = block.Samples;
+  this->sampleBlock(block, b, progress);
+  this->Sampler.measure(samples, progress);
+  this->frame(block, this->neighbours(b));
+  if (b == 0 && this->Blocks > 1 && !hasNormal(block.Frames, this->Thresholds))
+  {
+    this->findLeadingNormals(progress);
+    if (this->FirstDefinedBlock > 0)
+    {
+      this->frame(block, this->neighbours(0));
+    }
+  }
+  this->LastTangent = block.Frames.back().Tangent;
+  this->LastNormal = block.Frames.back().Normal;
   // Back to data units. The knot samples of an interpolation are the data points, exactly.
+  const FittedPolyline& fit = this->Fit;
+  const long end = this->Sampler.size() - 1;
   for (int k = 0; k < samples.size(); ++k)
   {
     const int span = samples.Span[k];
     const bool atKnot = fit.interpolates() &&
-      (samples.SpanFraction[k] == 0.0 || (!fit.Data.Closed && k == samples.size() - 1));
+      (samples.SpanFraction[k] == 0.0 || (!fit.Data.Closed && samples.First + k == end));
     const int knot = samples.SpanFraction[k] == 0.0 ? span : span + 1;
     samples.Values[k][0] =
       atKnot ? fit.KnotPoints[knot] : Vec3(fit.Origin + fit.Scale * samples.Values[k][0]);
     samples.Parameter[k] *= fit.ParameterScale;
     samples.ArcLength[k] *= fit.Scale;
-    sampled.Frames[k].Curvature = toDataUnits(sampled.Frames[k].Curvature, fit.Scale);
-    sampled.Frames[k].Torsion = toDataUnits(sampled.Frames[k].Torsion, fit.Scale);
+    block.Frames[k].Curvature = toDataUnits(block.Frames[k].Curvature, fit.Scale);
+    block.Frames[k].Torsion = toDataUnits(block.Frames[k].Torsion, fit.Scale);
   }
   samples.Length *= fit.Scale;
-  return sampled;
+  return true;
+}
+
+SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress)
+{
+  FitSampler sampler(fit, fit.Plan.size());
+  sampler.next(progress);
+  return std::move(sampler.Block);
 }
 
 namespace

@@ -76,8 +76,8 @@ using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;
 
 /**
  * A family's curve through one polyline, audited, with its sampling planned
- * but not done: sampleFit() samples it when its output is written, so that
- * no more than one line's samples per thread are ever held.
+ * but not done: a FitSampler samples it when its output is written, so that
+ * no more than a block of samples per thread is ever held.
  */
 struct FittedPolyline
 {
@@ -120,14 +120,48 @@ struct SampledCurve
 };
 
 /**
- * Per sample, the curvature indistinguishable from zero, where the Frenet
- * normal and the torsion are not defined: 1e-10 of the inverse
- * bounding-box diagonal, or what the data's rounding (coordinateNoise) can cause:
- * an acceleration across the tangent of 32 noise / dt^2 on a span of parameter
- * length dt, that is a curvature of 32 noise / (dt |s'|)^2.
+ * Samples a fitted curve as planned, a block of at most blockSamples samples
+ * at a time, into Block: a long curve's samples are never all held. The
+ * blocks come in order along the curve and hold what sampleFit() gives,
+ * whatever their size: the arc length and the frames' transport run on from
+ * block to block. A sample's curvature is flat (its Frenet normal and torsion
+ * undefined) at or below 1e-10 of the inverse bounding-box diagonal, or what
+ * the data's rounding can cause: an acceleration across the tangent of
+ * 32 noise / dt^2 on a span of parameter length dt, that is a curvature of
+ * 32 noise / (dt |s'|)^2. The fit must have a Spline and outlive the sampler.
  */
-std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& samples,
-  const CleanPolyline& data, double coordinateNoise);
+class FitSampler
+{
+public:
+  FitSampler(const FittedPolyline& fit, long blockSamples);
+
+  /// Samples the next block into Block; false when the curve is done.
+  bool next(const ProgressCallback& progress = {});
+
+  /// The block last sampled; Block.Samples.First is where it starts on the curve.
+  SampledCurve Block;
+
+private:
+  /// Frames block's samples, with what it needs of the blocks around it.
+  void frame(SampledCurve& block, const FrameNeighbours& neighbours);
+  /// The neighbours of block b in the order the blocks come.
+  FrameNeighbours neighbours(long b) const;
+  /// When block 0 has no normal: the first block that has one, and from it
+  /// back, the normal each block before it takes its samples' normals from.
+  void findLeadingNormals(const ProgressCallback& progress);
+  void sampleBlock(SampledCurve& block, long b, const ProgressCallback& progress) const;
+
+  const FittedPolyline& Fit;
+  BlockSampler Sampler;
+  long BlockSamples;
+  long Blocks;
+  long Next = 0;
+  double Diagonal;
+  std::vector<double> Thresholds; ///< of the block last framed
+  Vec3 LastTangent, LastNormal;   ///< of the block last given
+  long FirstDefinedBlock = 0;     ///< the blocks before it have no normal of their own
+  std::vector<Vec3> NextNormals;  ///< per block before it: the first normal after the block
+};
 
 /**
  * The shape audit of a curve against its reference polygon, kept span by
@@ -141,8 +175,11 @@ std::vector<double> flatCurvature(const Curve& curve, const CurveSamples& sample
 class CurveAuditor
 {
 public:
+  /// keepSampleCurvatures: keep every sample's curvature (sampleCurvatures),
+  /// which only a bound on the change of curvature needs.
   CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
-    const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise);
+    const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
+    bool keepSampleCurvatures = false);
 
   /// (Re-)audits span j of curve, forgetting what the span's samples found before.
   void audit(const Curve& curve, int span);
@@ -157,7 +194,7 @@ public:
   /// Largest distance of span j's samples from the reference's segment j,
   /// over the longest of that segment and its neighbours.
   double largestDeviation(int span) const { return this->Deviation[span]; }
-  /// The curvature at span j's samples, from its start to its end.
+  /// The curvature at span j's samples, from its start to its end (when kept).
   const std::vector<double>& sampleCurvatures(int span) const { return this->SampleCurvatures[span]; }
 
 private:
@@ -170,7 +207,7 @@ private:
   std::vector<double> Speed;
   std::vector<double> Deviation;
   std::vector<double> LocalLength;
-  std::vector<std::vector<double>> SampleCurvatures;
+  std::vector<std::vector<double>> SampleCurvatures; ///< per span, when kept
   // One span's samples, thresholds and frames, reused from span to span.
   std::vector<Derivatives> Values;
   std::vector<double> Thresholds;
@@ -212,8 +249,8 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
 /**
  * Samples a fitted curve as planned, with Frenet frames, curvature and torsion
  * from its exact derivatives; the knot samples of an interpolation are the
- * data points, exactly.
- * Written once for every family. The fit must have a Spline.
+ * data points, exactly. Written once for every family: one FitSampler block.
+ * The fit must have a Spline.
  */
 SampledCurve sampleFit(const FittedPolyline& fit, const ProgressCallback& progress = {});
 } // namespace shapesplines

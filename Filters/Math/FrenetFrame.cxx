@@ -48,19 +48,19 @@ std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   const std::vector<double>& flatCurvature, const Vec3* previousNormal)
 {
   std::vector<FrenetFrame> frames;
-  frenetFrames(samples, flatCurvature, frames, previousNormal);
+  frenetFrames(samples, flatCurvature, frames, FrameNeighbours{ nullptr, previousNormal });
   return frames;
 }
 
 void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature,
-  std::vector<FrenetFrame>& frames, const Vec3* previousNormal)
+  std::vector<FrenetFrame>& frames, const FrameNeighbours& neighbours)
 {
   const int n = static_cast<int>(samples.size());
   frames.assign(n, FrenetFrame{});
   // A sample's normal is defined where its curvature exceeds the flat one.
   auto defined = [&](int k) { return frames[k].Curvature > flatCurvature[k]; };
 
-  Vec3 lastTangent = Vec3::UnitX();
+  Vec3 lastTangent = neighbours.PreviousTangent ? *neighbours.PreviousTangent : Vec3::UnitX();
   for (int k = 0; k < n; ++k)
   {
     const Vec3& d1 = samples[k][1];
@@ -97,14 +97,17 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
 
   // Fill flat samples by transporting the nearest defined normal along the curve:
   // forwards from the previous normal (or the first defined sample), then
-  // backwards before the first defined sample if nothing came before.
+  // backwards before the first defined sample (or from the next normal) if
+  // nothing came before.
   int first = 0;
   while (first < n && !defined(first))
   {
     ++first;
   }
-  const bool continues = previousNormal != nullptr;
-  Vec3 normal = continues ? *previousNormal
+  const bool continues = neighbours.PreviousNormal != nullptr;
+  const bool fromNext = !continues && first == n && neighbours.NextNormal != nullptr;
+  Vec3 normal = continues ? *neighbours.PreviousNormal
+    : fromNext            ? *neighbours.NextNormal
                           : (first < n ? frames[first].Normal
                                        : anyNormal(n > 0 ? frames[0].Tangent : Vec3::UnitX()));
   auto fill = [&](int k) {
@@ -118,12 +121,12 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
     f.Binormal = f.Tangent.cross(f.Normal);
     normal = f.Normal;
   };
-  const int forwardFrom = continues || first == n ? 0 : first;
+  const int forwardFrom = fromNext ? n : (continues || first == n ? 0 : first);
   for (int k = forwardFrom; k < n; ++k)
   {
     fill(k);
   }
-  normal = forwardFrom > 0 ? frames[first].Normal : normal;
+  normal = forwardFrom > 0 && !fromNext ? frames[first].Normal : normal;
   for (int k = forwardFrom - 1; k >= 0; --k)
   {
     fill(k);

@@ -18,20 +18,35 @@ struct FrenetFrame
 };
 
 /**
+ * What a run of samples framed on its own needs of the rest of its curve to
+ * get the frames of the whole curve framed at once: the last tangent and
+ * normal of the samples just before it; or, when the curve's first samples
+ * have no normal (see frenetFrames) and the run is among them, the first
+ * normal after it, which the run's normals are transported back from.
+ */
+struct FrameNeighbours
+{
+  const Vec3* PreviousTangent = nullptr;
+  const Vec3* PreviousNormal = nullptr;
+  const Vec3* NextNormal = nullptr;
+};
+
+/**
  * Frenet frames along a sequence of samples (derivatives 1..3 used). The
  * curvature is always the curve's own; where it is at or below flatCurvature[k]
  * (within rounding of zero) the Frenet normal is undefined: the torsion is 0
  * and the normal is carried by parallel transport from the nearest sample
  * where it is defined, so frames stay continuous and finite. previousNormal,
  * the last normal of the samples just before these, continues a curve's frames
- * piece by piece exactly as if they were computed in one go.
+ * piece by piece.
  */
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples,
   const std::vector<double>& flatCurvature, const Vec3* previousNormal = nullptr);
 
-/// The same into frames, reusing its storage (a caller framing many short runs).
+/// The same into frames, reusing its storage (a caller framing many short
+/// runs), with the run's neighbours on its curve.
 void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<double>& flatCurvature,
-  std::vector<FrenetFrame>& frames, const Vec3* previousNormal = nullptr);
+  std::vector<FrenetFrame>& frames, const FrameNeighbours& neighbours = {});
 
 /// The same with one threshold for every sample.
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature);

@@ -8,6 +8,9 @@ namespace shapesplines
 {
 namespace
 {
+// Progress: a block's samples (3/4 of its work), then their arc lengths.
+constexpr long ProgressEvery = 4096;
+
 // 8-point Gauss-Legendre rule on [-1, 1]: exact for polynomials of degree 15.
 constexpr std::array<double, 4> GaussNodes = { 0.1834346424956498, 0.5255324099163290,
   0.7966664774136267, 0.9602898564975363 };
@@ -62,12 +65,6 @@ double spanLength(const Curve& curve, int span)
   }
   return length;
 }
-
-/// Speed |s'| and its first two derivatives in t, from s', s'' and s'''.
-struct SpeedJet
-{
-  double Value, First, Second;
-};
 
 SpeedJet speedJet(const Derivatives& d)
 {
@@ -197,66 +194,123 @@ CurveSamples sampleCurve(const Curve& curve, const SamplingOptions& options)
 
 CurveSamples sampleCurve(const Curve& curve, const SamplingPlan& plan, const ProgressCallback& progress)
 {
-  // Progress: the samples (3/4 of the work), then their arc lengths.
-  constexpr long Every = 4096;
-  const int spans = curve.numberOfSpans();
-  const auto& knots = curve.knots();
-  const bool byArcLength = !plan.SpanLengths.empty();
+  BlockSampler sampler(curve, plan);
   CurveSamples samples;
-  const long count = plan.size();
-  samples.Parameter.reserve(count);
-  samples.Span.reserve(count);
-  samples.Values.reserve(count);
-  samples.SpanFraction.reserve(count);
-  auto addSample = [&](int span, double t) {
-    reportProgress(progress, samples.size(), Every, 0.75 * samples.size() / count);
-    samples.Parameter.push_back(t);
-    samples.Span.push_back(span);
-    samples.SpanFraction.push_back((t - knots[span]) / (knots[span + 1] - knots[span]));
-    samples.Values.push_back(curve.evaluateOnSpan(span, t, 3));
-  };
-  for (int j = 0; j < spans; ++j)
-  {
-    const double t0 = knots[j];
-    const double t1 = knots[j + 1];
-    for (long k = 0; k < plan.PerSpan[j]; ++k)
-    {
-      const double fraction = static_cast<double>(k) / plan.PerSpan[j];
-      const double t = byArcLength && k > 0
-        ? parameterAtLength(curve, j, fraction * plan.SpanLengths[j], plan.SpanLengths[j])
-        : t0 + fraction * (t1 - t0);
-      addSample(j, t);
-    }
-  }
-  if (!curve.isClosed())
-  {
-    addSample(spans - 1, knots[spans]);
-  }
+  sampler.sample(0, sampler.size(), samples, progress);
+  sampler.measure(samples, progress);
+  return samples;
+}
 
+BlockSampler::BlockSampler(const Curve& curve, const SamplingPlan& plan)
+  : TheCurve(curve)
+  , Plan(plan)
+  , SpanStart(plan.PerSpan.size() + 1, 0)
+{
+  for (size_t j = 0; j < plan.PerSpan.size(); ++j)
+  {
+    this->SpanStart[j + 1] = this->SpanStart[j] + plan.PerSpan[j];
+  }
+}
+
+double BlockSampler::parameter(int j, long k) const
+{
+  const auto& knots = this->TheCurve.knots();
+  const double fraction = static_cast<double>(k) / this->Plan.PerSpan[j];
+  const std::vector<double>& lengths = this->Plan.SpanLengths;
+  return !lengths.empty() && k > 0
+    ? parameterAtLength(this->TheCurve, j, fraction * lengths[j], lengths[j])
+    : knots[j] + fraction * (knots[j + 1] - knots[j]);
+}
+
+std::pair<int, double> BlockSampler::locate(long i) const
+{
+  const int spans = this->TheCurve.numberOfSpans();
+  if (i >= this->SpanStart.back())
+  {
+    return { spans - 1, this->TheCurve.knots()[spans] }; // an open curve's end
+  }
+  const auto after = std::upper_bound(this->SpanStart.begin(), this->SpanStart.end(), i);
+  const int j = static_cast<int>(after - this->SpanStart.begin()) - 1;
+  return { j, this->parameter(j, i - this->SpanStart[j]) };
+}
+
+void BlockSampler::sample(
+  long first, long count, CurveSamples& samples, const ProgressCallback& progress) const
+{
+  const auto& knots = this->TheCurve.knots();
+  const double total = static_cast<double>(this->size());
+  samples.First = first;
+  samples.Parameter.resize(count);
+  samples.Span.resize(count);
+  samples.SpanFraction.resize(count);
+  samples.Values.resize(count);
+  samples.ArcLength.resize(count);
+  // Span by span from the block's first sample, as sampleCurve would have it.
+  auto [span, t] = this->locate(first);
+  long inSpan = first - this->SpanStart[span];
+  for (long k = 0; k < count; ++k)
+  {
+    reportProgress(progress, first + k, ProgressEvery, (first + 0.75 * k) / total);
+    if (k > 0)
+    {
+      if (++inSpan == this->Plan.PerSpan[span] && span + 1 < this->TheCurve.numberOfSpans())
+      {
+        ++span;
+        inSpan = 0;
+      }
+      t = inSpan < this->Plan.PerSpan[span] ? this->parameter(span, inSpan) : knots[span + 1];
+    }
+    samples.Parameter[k] = t;
+    samples.Span[k] = span;
+    samples.SpanFraction[k] = (t - knots[span]) / (knots[span + 1] - knots[span]);
+    samples.Values[k] = this->TheCurve.evaluateOnSpan(span, t, 3);
+  }
+}
+
+void BlockSampler::measure(CurveSamples& samples, const ProgressCallback& progress)
+{
+  const Curve& curve = this->TheCurve;
+  const auto& knots = curve.knots();
+  const int count = samples.size();
+  const double total = static_cast<double>(this->size());
+  if (samples.First != this->Measured || count == 0)
+  {
+    throw std::logic_error("BlockSampler: a block measured out of order");
+  }
   // Consecutive samples share a span, or the later one starts the next span:
   // then the span's own values at its end are needed (the third derivative
   // can jump at the knot). Each sample's speed jet serves both its intervals.
-  std::vector<SpeedJet> jets(samples.size());
-  std::transform(samples.Values.begin(), samples.Values.end(), jets.begin(), speedJet);
+  this->Jets.resize(count);
+  std::transform(samples.Values.begin(), samples.Values.end(), this->Jets.begin(), speedJet);
   auto lengthTo = [&](int from, int span, double end, const SpeedJet* atEnd) {
-    return sampledArcLength(curve, span, samples.Parameter[from], jets[from], end,
+    return sampledArcLength(curve, span, samples.Parameter[from], this->Jets[from], end,
       atEnd ? *atEnd : speedJet(curve.evaluateOnSpan(span, end, 3)));
   };
-  samples.ArcLength.resize(samples.size(), 0.0);
-  for (int k = 1; k < samples.size(); ++k)
+  samples.ArcLength[0] = this->Length;
+  for (int k = 1; k < count; ++k)
   {
-    reportProgress(progress, k, Every, 0.75 + 0.25 * k / count);
+    reportProgress(progress, samples.First + k, ProgressEvery,
+      (samples.First + 0.75 * count + 0.25 * k) / total);
     const int span = samples.Span[k - 1];
     const bool sameSpan = samples.Span[k] == span;
     samples.ArcLength[k] = samples.ArcLength[k - 1] +
       lengthTo(k - 1, span, sameSpan ? samples.Parameter[k] : knots[span + 1],
-        sameSpan ? &jets[k] : nullptr);
+        sameSpan ? &this->Jets[k] : nullptr);
   }
-  samples.Length = samples.ArcLength.back();
-  if (curve.isClosed())
+  // On to the next sample, or round a closed curve's seam span.
+  const int last = count - 1;
+  const int span = samples.Span[last];
+  this->Measured = samples.First + count;
+  this->Length = samples.ArcLength[last];
+  if (this->Measured < this->size())
   {
-    samples.Length += lengthTo(samples.size() - 1, spans - 1, knots[spans], nullptr);
+    const auto [nextSpan, t] = this->locate(this->Measured);
+    this->Length += lengthTo(last, span, nextSpan == span ? t : knots[span + 1], nullptr);
   }
-  return samples;
+  else if (curve.isClosed())
+  {
+    this->Length += lengthTo(last, span, knots[span + 1], nullptr);
+  }
+  samples.Length = this->Length;
 }
 } // namespace shapesplines

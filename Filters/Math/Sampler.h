@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace shapesplines
@@ -67,18 +68,66 @@ SamplingPlan planSamples(const Curve& curve, const SamplingOptions& options);
  */
 struct CurveSamples
 {
+  long First = 0; ///< index of the first of these samples on the curve (a block of them)
   std::vector<double> Parameter;
   std::vector<int> Span;
   std::vector<double> SpanFraction; ///< (t - t_span) / (t_span+1 - t_span), in [0, 1]
   std::vector<Derivatives> Values; ///< position and derivatives 1..3 (4th left zero)
   std::vector<double> ArcLength;   ///< from the first sample, by quadrature between samples (~1e-9 relative)
-  double Length = 0.0;             ///< whole curve, including a closed curve's seam span
+  /// Up to the sample after these: the whole curve, including a closed
+  /// curve's seam span, after its last sample.
+  double Length = 0.0;
 
   int size() const { return static_cast<int>(this->Parameter.size()); }
 };
 
 /// Arc length of curve between parameters a <= b inside one span (Gauss-Legendre).
 double arcLength(const Curve& curve, int span, double a, double b);
+
+/// Speed |s'| and its first two derivatives in t, from s', s'' and s'''.
+struct SpeedJet
+{
+  double Value, First, Second;
+};
+
+/**
+ * Samples a curve as planned, a block of consecutive samples at a time, into
+ * storage the caller reuses: a long curve's samples need never be held all
+ * at once. A block's values do not depend on the blocks (sampleCurve samples
+ * one): the arc length runs on from block to block. The curve and plan must
+ * outlive the sampler.
+ */
+class BlockSampler
+{
+public:
+  BlockSampler(const Curve& curve, const SamplingPlan& plan);
+
+  /// Samples of the whole curve.
+  long size() const { return this->SpanStart.back() + (this->Plan.Closed ? 0 : 1); }
+
+  /// Samples first..first + count - 1 of the curve into samples, all but
+  /// their arc lengths; any block, in any order.
+  void sample(
+    long first, long count, CurveSamples& samples, const ProgressCallback& progress = {}) const;
+
+  /// The arc lengths of the block just sampled into samples, and its Length:
+  /// blocks are measured in order along the curve, from its first sample.
+  void measure(CurveSamples& samples, const ProgressCallback& progress = {});
+
+private:
+  /// Span and parameter of sample i of the curve.
+  std::pair<int, double> locate(long i) const;
+  /// The parameter of the k-th sample of span j.
+  double parameter(int j, long k) const;
+
+  const Curve& TheCurve;
+  const SamplingPlan& Plan;
+  /// Each span's first sample, then the samples before an open curve's end.
+  std::vector<long> SpanStart;
+  std::vector<SpeedJet> Jets;  ///< of the block being measured, reused
+  long Measured = 0;           ///< samples measured so far
+  double Length = 0.0;         ///< arc length to sample Measured
+};
 
 CurveSamples sampleCurve(
   const Curve& curve, const SamplingPlan& plan, const ProgressCallback& progress = {});

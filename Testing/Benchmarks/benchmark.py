@@ -608,6 +608,8 @@ def main():
                         help="only the automatic modes' cost and shape on users' data, and the noisy points' table")
     parser.add_argument("--speed-only", action="store_true",
                         help="only the speed table (output points per second and ratios)")
+    parser.add_argument("--growth-only", action="store_true",
+                        help="only the cost growth table and plot (one line of 1e3 to 1e6 points)")
     parser.add_argument("--output", default="build/benchmark", help="folder for the plots")
     args = parser.parse_args()
     args.plugin = os.path.abspath(args.plugin)  # the growth runs load it from another folder
@@ -619,6 +621,10 @@ def main():
         automatic_cost()
         shape_on_users_data()
         noisy_unevenly_spaced()
+        return
+    if args.growth_only:
+        sizes, per_point = growth(args.plugin)
+        plot_growth(sizes, per_point, args.output)
         return
 
     cases = [("%d lines x 50 points" % args.lines, helix_lines(args.lines, 50), 3)]
