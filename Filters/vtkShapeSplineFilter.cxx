@@ -1190,7 +1190,7 @@ bool vtkShapeSplineFilter::WithinSampleBudget(vtkIdType samples)
     return true;
   }
   vtkErrorMacro("The output would hold " << samples << " samples, more than the "
-                << MaximumRunSamples << " a run may make (about 400 bytes each while it is "
+                << MaximumRunSamples << " a run may make (about 170 bytes each while it is "
                 << "made): "
                 << (this->SamplingMode == ARC_LENGTH
                        ? "raise SampleLength (now " + std::to_string(this->SampleLength) + ")"

@@ -38,6 +38,11 @@ Derivatives Curve::evaluate(double t, int order) const
   }
   return this->evaluateOnSpan(this->findSpan(t), t, order);
 }
+double Curve::arcLengthOnSpan(int span, double a, double b) const
+{
+  return gaussLegendre([&](double t) { return this->evaluateOnSpan(span, t, 1)[1].norm(); }, a, b);
+}
+
 TrimmedCurve::TrimmedCurve(std::unique_ptr<Curve> whole, int first, int spans)
   : Curve(std::vector<double>(whole->knots().begin() + first, whole->knots().begin() + first + spans + 1),
       false)
@@ -50,6 +55,11 @@ TrimmedCurve::TrimmedCurve(std::unique_ptr<Curve> whole, int first, int spans)
 Derivatives TrimmedCurve::evaluateOnSpan(int span, double t, int order) const
 {
   return this->Whole->evaluateOnSpan(span + this->First, t, order);
+}
+
+double TrimmedCurve::arcLengthOnSpan(int span, double a, double b) const
+{
+  return this->Whole->arcLengthOnSpan(span + this->First, a, b);
 }
 
 std::vector<SpanParameter> TrimmedCurve::spanParameters() const

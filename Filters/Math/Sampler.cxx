@@ -11,29 +11,8 @@ namespace
 // Progress: a block's samples (3/4 of its work), then their arc lengths.
 constexpr long ProgressEvery = 4096;
 
-// 8-point Gauss-Legendre rule on [-1, 1]: exact for polynomials of degree 15.
-constexpr std::array<double, 4> GaussNodes = { 0.1834346424956498, 0.5255324099163290,
-  0.7966664774136267, 0.9602898564975363 };
-constexpr std::array<double, 4> GaussWeights = { 0.3626837833783620, 0.3137066458778873,
-  0.2223810344533745, 0.1012285362903763 };
 // Subintervals per span for the span length: |s'| is smooth but not polynomial.
 constexpr int SpanPieces = 4;
-
-double speedIntegral(const Curve& curve, int span, double a, double b)
-{
-  const double mid = 0.5 * (a + b);
-  const double half = 0.5 * (b - a);
-  double sum = 0.0;
-  for (size_t k = 0; k < GaussNodes.size(); ++k)
-  {
-    for (const double sign : { -1.0, 1.0 })
-    {
-      const double t = mid + sign * half * GaussNodes[k];
-      sum += GaussWeights[k] * curve.evaluateOnSpan(span, t, 1)[1].norm();
-    }
-  }
-  return half * sum;
-}
 
 /// The Gauss-Legendre rule on halves, recursively, until the halves agree with
 /// their whole to 1e-10: a span through a near-stop (a kink in the speed)
@@ -43,8 +22,8 @@ double adaptiveSpeedIntegral(
   const Curve& curve, int span, double a, double b, double whole, int& budget)
 {
   const double middle = 0.5 * (a + b);
-  const double left = speedIntegral(curve, span, a, middle);
-  const double right = speedIntegral(curve, span, middle, b);
+  const double left = curve.arcLengthOnSpan(span, a, middle);
+  const double right = curve.arcLengthOnSpan(span, middle, b);
   const double halves = left + right;
   if (--budget <= 0 || !std::isfinite(halves) || std::abs(halves - whole) <= 1e-10 * halves)
   {
@@ -61,7 +40,7 @@ double spanLength(const Curve& curve, int span)
   double length = 0.0;
   for (int p = 0; p < SpanPieces; ++p)
   {
-    length += speedIntegral(curve, span, t0 + p * h, t0 + (p + 1) * h);
+    length += curve.arcLengthOnSpan(span, t0 + p * h, t0 + (p + 1) * h);
   }
   return length;
 }
@@ -102,7 +81,7 @@ double sampledArcLength(
     return withMiddle;
   }
   int budget = 64;
-  return adaptiveSpeedIntegral(curve, span, a, b, speedIntegral(curve, span, a, b), budget);
+  return adaptiveSpeedIntegral(curve, span, a, b, curve.arcLengthOnSpan(span, a, b), budget);
 }
 
 /// Parameter in span where the arc length from the span start reaches target.
@@ -139,7 +118,7 @@ void reportProgress(const ProgressCallback& progress, long step, long every, dou
 
 double arcLength(const Curve& curve, int span, double a, double b)
 {
-  return speedIntegral(curve, span, a, b);
+  return curve.arcLengthOnSpan(span, a, b);
 }
 
 long SamplingPlan::size() const

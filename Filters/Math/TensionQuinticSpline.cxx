@@ -800,6 +800,16 @@ std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const
   return out;
 }
 
+double TensionQuinticSpline::arcLengthOnSpan(int span, double a, double b) const
+{
+  auto speed = [&](double u) {
+    return powerDerivatives(this->XCPower[span], u, 1, Eigen::Vector4d(Eigen::Vector4d::Zero()))[1]
+      .tail<3>()
+      .norm();
+  };
+  return gaussLegendre(speed, this->localParameter(span, a), this->localParameter(span, b));
+}
+
 Derivatives TensionQuinticSpline::evaluateOnSpan(int span, double x, int order) const
 {
   const double u = this->localParameter(span, x);

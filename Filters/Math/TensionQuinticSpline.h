@@ -114,6 +114,10 @@ public:
     const QuinticParameters& parameters, bool closed = false);
 
   Derivatives evaluateOnSpan(int span, double x, int order) const override;
+  /// In the span's own variable u: the length of C(u) (a quintic), whose
+  /// speed stays smooth where a small gamma makes s'(x) = C'(u) / X'(u) vary
+  /// fast; and no inversion of X per node.
+  double arcLengthOnSpan(int span, double a, double b) const override;
 
   /// "Gamma" per span (the smaller of its two knots', cell summary MinGamma),
   /// and for C3 "Lambda" likewise.

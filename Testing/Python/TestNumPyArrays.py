@@ -153,7 +153,7 @@ for kwargs, message in [
     raises(lambda: fit_curves(points, **kwargs), message, ", ".join("%s=%r" % kv for kv in kwargs.items()))
 # The filter's own limit, in this function's words.
 raises(lambda: fit_curves([points] * 3, samples=100000),
-       "more than the 20000000 a run may make (about 400 bytes each while it is made): lower samples "
+       "more than the 20000000 a run may make (about 170 bytes each while it is made): lower samples "
        "(now 100000)", "3 x 9.6e6 samples")
 
 # No curves, wrong shapes; NaN, Inf and huge coordinates as the filter reports them.
