@@ -38,6 +38,7 @@ Derivatives Curve::evaluate(double t, int order) const
   }
   return this->evaluateOnSpan(this->findSpan(t), t, order);
 }
+
 double Curve::arcLengthOnSpan(int span, double a, double b) const
 {
   return gaussLegendre([&](double t) { return this->evaluateOnSpan(span, t, 1)[1].norm(); }, a, b);

@@ -93,7 +93,7 @@ double parameterAtLength(const Curve& curve, int span, double target, double tot
   const double tolerance = 1e-13 * std::max(total, 1e-300);
   for (int iteration = 0; iteration < 60; ++iteration)
   {
-    const double excess = arcLength(curve, span, curve.knots()[span], t) - target;
+    const double excess = curve.arcLengthOnSpan(span, curve.knots()[span], t) - target;
     if (std::abs(excess) <= tolerance)
     {
       break;
@@ -114,11 +114,6 @@ void reportProgress(const ProgressCallback& progress, long step, long every, dou
   {
     throw FitAborted();
   }
-}
-
-double arcLength(const Curve& curve, int span, double a, double b)
-{
-  return curve.arcLengthOnSpan(span, a, b);
 }
 
 long SamplingPlan::size() const

@@ -81,9 +81,6 @@ struct CurveSamples
   int size() const { return static_cast<int>(this->Parameter.size()); }
 };
 
-/// Arc length of curve between parameters a <= b inside one span (Gauss-Legendre).
-double arcLength(const Curve& curve, int span, double a, double b);
-
 /// Speed |s'| and its first two derivatives in t, from s', s'' and s'''.
 struct SpeedJet
 {

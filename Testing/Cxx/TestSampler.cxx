@@ -137,7 +137,7 @@ TEST(Sampler, ArcLengthBetweenSamplesWhereTheSpeedVariesFast)
                                                                      : s.knots()[span + 1];
       for (int piece = 0; piece < 64; ++piece)
       {
-        reference += arcLength(s, span, a + (b - a) * piece / 64, a + (b - a) * (piece + 1) / 64);
+        reference += s.arcLengthOnSpan(span, a + (b - a) * piece / 64, a + (b - a) * (piece + 1) / 64);
       }
       const double computed = k < samples.size() ? samples.ArcLength[k] : samples.Length;
       if (k < samples.size() || closed)
