@@ -8,7 +8,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <numeric>
 
 namespace shapesplines
 {
@@ -37,31 +36,30 @@ double typicalMagnitude(const double* first, const double* last)
     std::memcpy(&bits, &magnitude, sizeof bits);
     return bits;
   };
-  std::vector<size_t> counts(size_t(1) << Digit);
   std::uint64_t prefix = 0; // the top `decided` bits of the value sought
   int decided = 0;
-  size_t rank = 0;
-  size_t holding = 0;
-  do
+  const auto agrees = [&](double value) {
+    return std::isfinite(value) && (decided == 0 || bitsOf(value) >> (64 - decided) == prefix);
+  };
+  size_t holding = static_cast<size_t>(std::count_if(first, last, agrees));
+  if (holding == 0)
+  {
+    return 0.0;
+  }
+  size_t rank = static_cast<size_t>(0.95 * (holding - 1));
+  // A short line's samples are selected among directly: the counts' 512 kB
+  // would cost more than the selection.
+  std::vector<size_t> counts(holding > FewValues ? size_t(1) << Digit : 0);
+  while (holding > FewValues && decided < 64)
   {
     const int shift = 64 - decided - Digit;
     std::fill(counts.begin(), counts.end(), 0);
     for (const double* v = first; v != last; ++v)
     {
-      const std::uint64_t bits = bitsOf(*v);
-      if (std::isfinite(*v) && (decided == 0 || bits >> (64 - decided) == prefix))
+      if (agrees(*v))
       {
-        ++counts[(bits >> shift) & (counts.size() - 1)];
+        ++counts[(bitsOf(*v) >> shift) & (counts.size() - 1)];
       }
-    }
-    if (decided == 0)
-    {
-      const size_t finite = std::accumulate(counts.begin(), counts.end(), size_t(0));
-      if (finite == 0)
-      {
-        return 0.0;
-      }
-      rank = static_cast<size_t>(0.95 * (finite - 1));
     }
     size_t bucket = 0;
     while (rank >= counts[bucket])
@@ -71,7 +69,7 @@ double typicalMagnitude(const double* first, const double* last)
     prefix = (prefix << Digit) | bucket;
     decided += Digit;
     holding = counts[bucket];
-  } while (holding > FewValues && decided < 64);
+  }
   if (decided == 64)
   {
     double value; // every bit decided: the values left are all this one
@@ -82,7 +80,7 @@ double typicalMagnitude(const double* first, const double* last)
   candidates.reserve(holding);
   for (const double* v = first; v != last; ++v)
   {
-    if (std::isfinite(*v) && bitsOf(*v) >> (64 - decided) == prefix)
+    if (agrees(*v))
     {
       candidates.push_back(std::abs(*v));
     }

@@ -3,6 +3,7 @@
 // pipelines. Inputs are built in code unless a file of SHAPESPLINES_DATA_DIR
 // is named.
 #include "FitPolyline.h"
+#include "OutputArrays.h"
 
 #include "vtkCubicSplineFilter.h"
 #include "vtkCurvatureCombFilter.h"
@@ -46,6 +47,7 @@
 #include <thread>
 #include <functional>
 #include <initializer_list>
+#include <random>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -1892,6 +1894,42 @@ TEST(TorsionColorRange, CentredOnZeroAndNotSquashedBySpikes)
   EXPECT_GT(largest, 100.0);
   EXPECT_LT(range(aorta.Output).second, 0.2 * largest);
   EXPECT_GT(range(aorta.Output).second, 0.0);
+}
+
+// The selection by bits (long arrays) and the direct one (short arrays) give the
+// 95th percentile of |v| over the finite values that a sort gives.
+TEST(TypicalMagnitude, IsTheSorted95thPercentileOfTheFiniteMagnitudes)
+{
+  std::mt19937 random(7);
+  std::normal_distribution<double> gauss(0.0, 3.0);
+  const auto sorted = [](std::vector<double> values) {
+    values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+      values.end());
+    for (double& v : values)
+    {
+      v = std::abs(v);
+    }
+    std::sort(values.begin(), values.end());
+    return values.empty() ? 0.0 : values[static_cast<size_t>(0.95 * (values.size() - 1))];
+  };
+  for (const size_t count : { size_t(1), size_t(10), size_t(10000), size_t(65536), size_t(300000) })
+  {
+    SCOPED_TRACE(count);
+    std::vector<double> values(count);
+    for (double& v : values)
+    {
+      v = gauss(random);
+    }
+    values[0] = std::numeric_limits<double>::quiet_NaN();
+    values[count / 2] = -std::numeric_limits<double>::infinity();
+    EXPECT_EQ(shapesplines::typicalMagnitude(values), sorted(values));
+    // A crowd of one value (every bit decided) among a few others.
+    std::vector<double> crowded(count, -0.2);
+    crowded[count - 1] = 1e9;
+    EXPECT_EQ(shapesplines::typicalMagnitude(crowded), sorted(crowded));
+  }
+  EXPECT_EQ(shapesplines::typicalMagnitude(std::vector<double>{}), 0.0);
+  EXPECT_EQ(shapesplines::typicalMagnitude(std::vector<double>(5, std::nan(""))), 0.0);
 }
 
 // ---------------------------------------------------------------------------
