@@ -56,7 +56,9 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
   std::vector<FrenetFrame>& frames, const FrameNeighbours& neighbours)
 {
   const int n = static_cast<int>(samples.size());
-  frames.assign(n, FrenetFrame{});
+  // Every field of every frame is written below: a block's frames are not
+  // filled with defaults first (a pass over ~0.7 MB per block).
+  frames.resize(n);
   // A sample's normal is defined where its curvature exceeds the flat one.
   auto defined = [&](int k) { return frames[k].Curvature > flatCurvature[k]; };
 
@@ -86,6 +88,7 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
     const double crossNorm = robustNorm(cross);
     const double curvature = speed > 0 ? crossNorm / (speed * speed * speed) : 0.0;
     f.Curvature = std::isfinite(curvature) ? curvature : 0.0;
+    f.Torsion = 0.0; // a flat sample's; its normal and binormal are transported below
     if (f.Curvature > flatCurvature[k])
     {
       // Orthonormalise against the tangent: near-parallel s', s'' round badly.
