@@ -516,11 +516,14 @@ def growth(plugin):
           "(first run; median of repeated runs):" % GROWTH_PROCESSES)
     print("%10s %10s %16s %16s %16s %18s" % ("points", "seconds", "first ns/out pt", "repeated ns/pt",
                                              "peak RSS MiB", "fit bytes/out pt"))
-    sizes, first, repeated = [], [], []
-    for n in (1000, 10000, 100000, 1000000):
-        runs = [fresh_process_runs(plugin, n) for _ in range(GROWTH_PROCESSES)]
+    sizes, first, repeated = (1000, 10000, 100000, 1000000), [], []
+    # The sizes take turns, so that a slow spell of the machine does not fall on one size.
+    per_size = [[] for _ in sizes]
+    for _ in range(GROWTH_PROCESSES):
+        for n, runs in zip(sizes, per_size):
+            runs.append(fresh_process_runs(plugin, n))
+    for n, runs in zip(sizes, per_size):
         seconds, _, points, before, peak = min(runs)
-        sizes.append(n)
         first.append(1e9 * seconds / points)
         repeated.append(1e9 * min(run[1] for run in runs) / points)
         print("%10d %10.3f %16.1f %16.1f %16.0f %18.0f" % (n, seconds, first[-1], repeated[-1], peak / 1024,
