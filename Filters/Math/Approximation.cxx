@@ -10,6 +10,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 
 namespace shapesplines
 {
@@ -479,12 +480,33 @@ bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, b
   {
     return false;
   }
-  auto score = [&](int knots) {
-    const auto fit = QuinticFit::solve(points, u, uniformKnots(u, closed ? knots + 1 : knots), closed);
-    return fit ? gcvScore(fit->residual(points, u), count, knots, closed)
-               : std::numeric_limits<double>::infinity();
+  // Knots at the points' quantiles, 3 and 2 points a span: knots uniform in
+  // u leave the spans of widely spaced points with one point or none (a clean
+  // spiral from a tight centre), whose fit fails and made the points look noisy.
+  // (A closed line's u ends with its closing parameter.)
+  const int parameters = static_cast<int>(u.size());
+  auto knotsAtQuantiles = [&](int knots) {
+    std::vector<double> at(knots);
+    for (int j = 0; j < knots; ++j)
+    {
+      const double position = static_cast<double>(j) * (parameters - 1) / (knots - 1);
+      const int below = std::min(static_cast<int>(position), parameters - 2);
+      at[j] = u[below] + (position - below) * (u[below + 1] - u[below]);
+    }
+    at.back() = u.back();
+    return at;
   };
-  return score(count / 3) < score(count / 2);
+  auto score = [&](int knots) -> std::optional<double> {
+    const auto fit = QuinticFit::solve(points, u, knotsAtQuantiles(closed ? knots + 1 : knots), closed);
+    if (!fit)
+    {
+      return std::nullopt;
+    }
+    return gcvScore(fit->residual(points, u), count, knots, closed);
+  };
+  const auto fewer = score(count / 3);
+  const auto more = score(count / 2);
+  return fewer && more && *fewer < *more; // no verdict where a fit fails
 }
 
 double referenceNoise(const ApproximationPlan& plan, int knots, int points)
