@@ -27,6 +27,22 @@ std::vector<double> uniformKnots(const std::vector<double>& u, int count)
 
 namespace
 {
+/// count >= 2 knots at the quantiles of the increasing parameters u: as many
+/// parameters between any two knots, ending exactly at u's ends.
+std::vector<double> quantileKnots(const std::vector<double>& u, int count)
+{
+  const int parameters = static_cast<int>(u.size());
+  std::vector<double> knots(count);
+  for (int j = 0; j < count; ++j)
+  {
+    const double position = static_cast<double>(j) * (parameters - 1) / (count - 1);
+    const int below = std::min(static_cast<int>(position), parameters - 2);
+    knots[j] = u[below] + (position - below) * (u[below + 1] - u[below]);
+  }
+  knots.back() = u.back();
+  return knots;
+}
+
 /// Every count up to 64 (GCV is bumpy there: on a noisy 80-point line 14
 /// knots scored 6% above 19, with 15-18 between); beyond, 15% steps.
 std::vector<int> candidateCounts(int lowest, int highest)
@@ -483,21 +499,8 @@ bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, b
   // Knots at the points' quantiles, 3 and 2 points a span: knots uniform in
   // u leave the spans of widely spaced points with one point or none (a clean
   // spiral from a tight centre), whose fit fails and made the points look noisy.
-  // (A closed line's u ends with its closing parameter.)
-  const int parameters = static_cast<int>(u.size());
-  auto knotsAtQuantiles = [&](int knots) {
-    std::vector<double> at(knots);
-    for (int j = 0; j < knots; ++j)
-    {
-      const double position = static_cast<double>(j) * (parameters - 1) / (knots - 1);
-      const int below = std::min(static_cast<int>(position), parameters - 2);
-      at[j] = u[below] + (position - below) * (u[below + 1] - u[below]);
-    }
-    at.back() = u.back();
-    return at;
-  };
   auto score = [&](int knots) -> std::optional<double> {
-    const auto fit = QuinticFit::solve(points, u, knotsAtQuantiles(closed ? knots + 1 : knots), closed);
+    const auto fit = QuinticFit::solve(points, u, quantileKnots(u, closed ? knots + 1 : knots), closed);
     if (!fit)
     {
       return std::nullopt;
