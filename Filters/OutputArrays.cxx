@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <numeric>
 
 namespace shapesplines
 {
@@ -41,14 +42,10 @@ double typicalMagnitude(const double* first, const double* last)
   const auto agrees = [&](double value) {
     return std::isfinite(value) && (decided == 0 || bitsOf(value) >> (64 - decided) == prefix);
   };
-  size_t holding = static_cast<size_t>(std::count_if(first, last, agrees));
-  if (holding == 0)
-  {
-    return 0.0;
-  }
-  size_t rank = static_cast<size_t>(0.95 * (holding - 1));
   // A short line's samples are selected among directly: the counts' 512 kB
   // would cost more than the selection.
+  size_t holding = static_cast<size_t>(last - first); // at least the values left
+  size_t rank = 0;
   std::vector<size_t> counts(holding > FewValues ? size_t(1) << Digit : 0);
   while (holding > FewValues && decided < 64)
   {
@@ -60,6 +57,15 @@ double typicalMagnitude(const double* first, const double* last)
       {
         ++counts[(bitsOf(*v) >> shift) & (counts.size() - 1)];
       }
+    }
+    if (decided == 0)
+    {
+      const size_t finite = std::accumulate(counts.begin(), counts.end(), size_t(0));
+      if (finite == 0)
+      {
+        return 0.0;
+      }
+      rank = static_cast<size_t>(0.95 * (finite - 1));
     }
     size_t bucket = 0;
     while (rank >= counts[bucket])
@@ -85,6 +91,11 @@ double typicalMagnitude(const double* first, const double* last)
       candidates.push_back(std::abs(*v));
     }
   }
+  if (candidates.empty())
+  {
+    return 0.0;
+  }
+  rank = decided == 0 ? static_cast<size_t>(0.95 * (candidates.size() - 1)) : rank;
   const auto nth = candidates.begin() + static_cast<std::ptrdiff_t>(rank);
   std::nth_element(candidates.begin(), nth, candidates.end());
   return *nth;
