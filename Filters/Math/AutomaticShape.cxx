@@ -28,8 +28,10 @@ int failingBits(unsigned mask)
 class ShapeSearch
 {
 public:
-  ShapeSearch(const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
-    : Context(context)
+  ShapeSearch(const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder,
+    bool raiseTwistNeighbours)
+    : RaiseTwistNeighbours(raiseTwistNeighbours)
+    , Context(context)
     , Reference(reference)
     , Ladder(ladder)
     , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise))
@@ -92,6 +94,8 @@ public:
 private:
   /// Whole-curve audits after the first: a global solve moves far spans a little.
   static constexpr int MostWholeAudits = 4;
+  static constexpr unsigned TorsionSignOnSpanBit = 1u
+    << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
 
   /// What the bounds limit on a span.
   struct Figures
@@ -176,6 +180,12 @@ private:
     {
       return raise;
     }
+    auto raiseNeighbours = [&](int j) {
+      for (const int neighbour : { this->span(j - 1), this->span(j + 1) })
+      {
+        raise[std::max(neighbour, 0)] |= this->canRise(neighbour);
+      }
+    };
     for (int j = 0; j < this->Spans; ++j)
     {
       if (this->Ladder.Uniform)
@@ -185,13 +195,18 @@ private:
       else if (this->Audit.SpanMask[j] != 0 && this->canRise(j))
       {
         raise[j] = 1;
+        // Torsion is a third derivative, which the solve spreads over the
+        // neighbours: a span raised alone pushes its sign change into the
+        // next span, which then fails in the round after. Raised together,
+        // the three take half the rounds (measured on noisy helices).
+        if (this->RaiseTwistNeighbours && (this->Audit.SpanMask[j] & TorsionSignOnSpanBit))
+        {
+          raiseNeighbours(j);
+        }
       }
       else if (this->Audit.SpanMask[j] != 0)
       {
-        for (const int neighbour : { this->span(j - 1), this->span(j + 1) })
-        {
-          raise[std::max(neighbour, 0)] |= this->canRise(neighbour);
-        }
+        raiseNeighbours(j);
       }
     }
     return raise;
@@ -336,6 +351,7 @@ private:
     return result;
   }
 
+  const bool RaiseTwistNeighbours;
   const FitContext& Context;
   const CleanPolyline& Reference;
   const ShapeLadder& Ladder;
@@ -422,6 +438,15 @@ BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
 {
-  return ShapeSearch(context, reference, ladder).run();
+  AutomaticShape found = ShapeSearch(context, reference, ladder, true).run();
+  if (ladder.RetrySpanBySpan && found.Audit.violations() > 0)
+  {
+    AutomaticShape again = ShapeSearch(context, reference, ladder, false).run();
+    if (again.Audit.violations() < found.Audit.violations())
+    {
+      return again;
+    }
+  }
+  return found;
 }
 } // namespace shapesplines

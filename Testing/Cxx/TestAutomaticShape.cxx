@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstdio>
 
 using namespace shapesplines;
@@ -23,17 +25,22 @@ namespace
  * span blended with its chord by w = min(1, level / 2) (w = 1: the span is
  * straight, which breaks no criterion of Definition 1), and, with Wiggle,
  * a bump of level * Wiggle * h out of the plane z = 0 added instead (more
- * violations the higher the level on planar data).
+ * violations the higher the level on planar data). With TwistedSpan, that
+ * span of the cubic carries a twist along z, h tau^4 (1 - tau)^4 * 16, which
+ * vanishes at its knots to the third derivative: the span's torsion changes
+ * sign, its knots' does not; the blend with the chord takes it away.
  */
 class ToyCurve final : public Curve
 {
 public:
-  ToyCurve(const CleanPolyline& data, const std::vector<double>& knots, std::vector<int> levels, double wiggle)
+  ToyCurve(const CleanPolyline& data, const std::vector<double>& knots, std::vector<int> levels,
+    double wiggle, int twistedSpan)
     : Curve(knots, data.Closed)
     , Cubic(CubicSpline::interpolate(data.Points, knots, data.Closed))
     , Points(data.Points)
     , Levels(std::move(levels))
     , Wiggle(wiggle)
+    , TwistedSpan(twistedSpan)
   {
   }
 
@@ -42,6 +49,25 @@ public:
     Derivatives d = this->Cubic.evaluateOnSpan(span, t, order);
     const double h = this->Knots[span + 1] - this->Knots[span];
     const double tau = (t - this->Knots[span]) / h;
+    if (span == this->TwistedSpan)
+    {
+      // d^m/dt^m of 16 h tau^4 (1 - tau)^4, by its power form in tau.
+      const std::array<double, 9> twist{ 0, 0, 0, 0, 16, -64, 96, -64, 16 };
+      for (int m = 0; m <= order; ++m)
+      {
+        double value = 0.0;
+        for (int n = 8; n >= m; --n)
+        {
+          double falling = 1.0;
+          for (int i = 0; i < m; ++i)
+          {
+            falling *= n - i;
+          }
+          value += twist[n] * falling * std::pow(tau, n - m);
+        }
+        d[m].z() += value * h / std::pow(h, m);
+      }
+    }
     if (this->Wiggle > 0.0)
     {
       const double a = this->Levels[span] * this->Wiggle * h;
@@ -78,24 +104,29 @@ private:
   std::vector<Vec3> Points;
   std::vector<int> Levels;
   double Wiggle;
+  int TwistedSpan;
 };
 
 struct ToyRun
 {
   int Builds = 0;
   std::vector<int> Levels;
+  std::vector<int> FirstRaise; ///< the levels of the first round's curve
 };
 
 CurveBuilder toyBuilder(ToyRun& run, double wiggle = 0.0, bool uniform = false,
-  const ProgressCallback& progress = {})
+  const ProgressCallback& progress = {}, int twistedSpan = -1)
 {
-  return [&run, wiggle, uniform, progress](const FitContext& context) {
+  return [&run, wiggle, uniform, progress, twistedSpan](const FitContext& context) {
     ShapeLadder ladder;
     ladder.TopLevel = 2;
     ladder.Uniform = uniform;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-      ++run.Builds;
-      return std::make_unique<ToyCurve>(context.Data, context.Knots, levels, wiggle);
+      if (++run.Builds == 2)
+      {
+        run.FirstRaise = levels;
+      }
+      return std::make_unique<ToyCurve>(context.Data, context.Knots, levels, wiggle, twistedSpan);
     };
     FitOptions options = context.Options;
     options.Progress = progress;
@@ -121,12 +152,35 @@ TEST(AutomaticShape, RaisesOnlyTheFailingSpansUntilNoneFails)
   // Its own audit agrees with an independent one of the final curve.
   EXPECT_EQ(fit.Audit.SpanMask,
     auditCurve(*fit.Spline, fit.Data, fit.Shape, FitOptions{}.Tolerances, 16, fit.CoordinateNoise).SpanMask);
-  // A level moves its own span only: exactly the spans the cubic failed are raised.
+  // A level moves its own span only: exactly the spans the cubic failed are
+  // raised (planar data: no torsion, whose failures also raise neighbours).
   for (size_t j = 0; j < run.Levels.size(); ++j)
   {
     EXPECT_EQ(run.Levels[j] > 0, cubic.Audit.SpanMask[j] != 0) << "span " << j;
   }
   EXPECT_LE(run.Builds, 4);
+}
+
+TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
+{
+  // Raised alone, such a span pushes its torsion's sign change into the next
+  // span (the third derivative spreads through a family's solve): the driver
+  // raises the neighbours in the same round. A clean helix whose span 20
+  // alone twists: the first round raises spans 19 to 21, and no other.
+  const std::vector<Vec3> points = helix(16, 3);
+  constexpr int Twisted = 20;
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, 0.0, false, {}, Twisted));
+  EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations();
+  ASSERT_FALSE(run.FirstRaise.empty());
+  for (int j = 0; j < static_cast<int>(run.FirstRaise.size()); ++j)
+  {
+    EXPECT_EQ(run.FirstRaise[j] > 0, std::abs(j - Twisted) <= 1) << "span " << j;
+  }
+  // The twist is what failed: without it the helix needs no raise.
+  ToyRun clean;
+  EXPECT_TRUE(fitPolyline(points, FitOptions{}, toyBuilder(clean)).Audit.preserving());
+  EXPECT_EQ(clean.Builds, 1);
 }
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
