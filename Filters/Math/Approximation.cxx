@@ -330,12 +330,22 @@ ExtendedData extendForApproximation(
     return data;
   }
   // The points within two mean spacings of an end (at least two; repeated
-  // points near an end give no leverage), at most a quarter of them.
+  // points near an end give no leverage), at most a quarter of them; and as
+  // many more as it takes to reach one mean spacing beyond the end with two
+  // points beyond it.
+  // Corrected parameters of noisy points often gather at an end (the second
+  // point projects before the first, and is kept at the end): the span
+  // beyond would have no length, the fit none (0 / 0), and cross-validation
+  // would lose the knot counts whose fits met it, the few that torsion needs.
   const double a = u.front(), b = u[n - 1];
   const double reach = 2.0 * (b - a) / (n - 1);
   auto mirrored = [&](auto distance) {
     int count = 2;
     while (count < n / 4 && distance(count + 1) <= reach)
+    {
+      ++count;
+    }
+    while (count < n - 1 && (distance(count) < 0.5 * reach || distance(count - 1) <= 0.0))
     {
       ++count;
     }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -273,4 +274,50 @@ TEST(Approximation, OpenLinesAreExtendedByMirroredPoints)
   EXPECT_EQ(closed.Points.size(), points.size());
   EXPECT_EQ(closed.Extra, 0);
   EXPECT_EQ(closed.Knots.size(), 6u);
+}
+
+TEST(Approximation, ParametersGatheredAtAnEndStillExtendIt)
+{
+  // Corrected parameters of noisy points gather at an end (a point that
+  // projects before the first is kept at the end): the mirror reaches one
+  // mean spacing past it, with two points beyond the end, so the span beyond
+  // has a length and the fit a solution.
+  std::vector<Vec3> points;
+  std::vector<double> u;
+  for (int i = 0; i < 60; ++i)
+  {
+    const double t = 0.05 * i;
+    points.emplace_back(std::cos(t), std::sin(t), 0.1 * t);
+    u.push_back(t);
+  }
+  u[1] = u[2] = u[0];
+  u[58] = u[59];
+  const double spacing = (u.back() - u.front()) / 59.0;
+  const ExtendedData data = extendForApproximation(points, u, 5, false);
+  EXPECT_LE(data.Knots.front(), u.front() - spacing);
+  EXPECT_GE(data.Knots.back(), u.back() + spacing);
+  EXPECT_GE(std::count_if(data.Parameters.begin(), data.Parameters.end(), [&](double v) { return v < u.front(); }), 2);
+  EXPECT_GE(std::count_if(data.Parameters.begin(), data.Parameters.end(), [&](double v) { return v > u.back(); }), 2);
+  EXPECT_TRUE(QuinticFit::solve(data.Points, data.Parameters, data.Knots, false).has_value());
+}
+
+TEST(Approximation, EveryFewKnotCountHasAFitOnDenseNoisyPoints)
+{
+  // 400 points at random places on a helix, noise about the spacing: the
+  // corrected parameters of the first and last points gather at the ends.
+  // Every small count still gets its fit (a noise level), so that
+  // cross-validation can take the few knots torsion needs.
+  for (const unsigned seed : { 3u, 4u, 5u, 6u })
+  {
+    const std::vector<Vec3> points = randomlySampled(helixAt, 0.0, 4 * Pi, 400, 0.02, seed);
+    CleanPolyline data;
+    data.Points = points;
+    const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
+    for (int knots = 3; knots <= 9; ++knots)
+    {
+      const ApproximationPlan plan = planApproximation(points, u, 200, false, knots, true);
+      EXPECT_GT(plan.NoiseLevel, 0.0) << "seed " << seed << ", " << knots << " knots";
+      EXPECT_TRUE(std::all_of(plan.Parameters.begin(), plan.Parameters.end(), [](double v) { return std::isfinite(v); }));
+    }
+  }
 }
