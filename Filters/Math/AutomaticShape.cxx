@@ -188,11 +188,13 @@ private:
     };
     for (int j = 0; j < this->Spans; ++j)
     {
+      // What the ladder's parameter can mend; a span failing nothing else is left.
+      const unsigned failing = this->Audit.SpanMask[j] & ~this->Ladder.Unmendable;
       if (this->Ladder.Uniform)
       {
         raise[j] = this->canRise(j);
       }
-      else if (this->Audit.SpanMask[j] != 0 && this->canRise(j))
+      else if (failing != 0 && this->canRise(j))
       {
         raise[j] = 1;
         // Torsion is a third derivative, which the solve spreads over the
@@ -204,7 +206,7 @@ private:
           raiseNeighbours(j);
         }
       }
-      else if (this->Audit.SpanMask[j] != 0)
+      else if (failing != 0)
       {
         raiseNeighbours(j);
       }

@@ -61,6 +61,10 @@ struct ShapeLadder
   /// lose their last violations that way; the quintic and qqr gained few or
   /// none for 1.3-2x the cost.
   bool RetrySpanBySpan = false;
+  /// Criteria (bits 1 << ShapeCriterion) the parameter does not mend: a span
+  /// failing only these is not raised (qqr: an exponent pulls a span towards
+  /// its chord, which does not turn its torsion's sign).
+  unsigned Unmendable = 0;
   int MaxRounds = 64;
   ShapeBounds Bounds;
   /// How far the reference polygon's vertices move with the noise (see
@@ -79,7 +83,8 @@ struct AutomaticShape
 
 /**
  * The automatic mode: builds level 0 and audits it against reference; then,
- * round by round, raises each failing span (a span already at the top, or
+ * round by round, raises each failing span (one that fails only criteria the
+ * ladder does not mend excepted; a span already at the top, or
  * frozen, raises its neighbours instead; a span whose torsion changes sign
  * on it raises its neighbours with it) by a step that doubles while it
  * keeps failing, rebuilds, and audits again only the spans within Reach of a

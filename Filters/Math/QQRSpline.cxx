@@ -789,6 +789,9 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       ladder.TopLevel = stepsToCap(start, raise);
       ladder.MaxRounds = options.MaxRounds;
       ladder.Reach = 3; // a knot's exponent moves the spans on both sides and the global solve
+      // Raised, a span nears its chord: its torsion's sign does not turn (on
+      // noisy helices every violation left is one; raising for them only cost).
+      ladder.Unmendable = 1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
       ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
         const std::vector<int> perKnot = knotLevels(levels, data.Closed);
         std::vector<double> kappa(perKnot.size());

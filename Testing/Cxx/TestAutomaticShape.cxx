@@ -115,12 +115,13 @@ struct ToyRun
 };
 
 CurveBuilder toyBuilder(ToyRun& run, double wiggle = 0.0, bool uniform = false,
-  const ProgressCallback& progress = {}, int twistedSpan = -1)
+  const ProgressCallback& progress = {}, int twistedSpan = -1, unsigned unmendable = 0)
 {
-  return [&run, wiggle, uniform, progress, twistedSpan](const FitContext& context) {
+  return [&run, wiggle, uniform, progress, twistedSpan, unmendable](const FitContext& context) {
     ShapeLadder ladder;
     ladder.TopLevel = 2;
     ladder.Uniform = uniform;
+    ladder.Unmendable = unmendable;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
       if (++run.Builds == 2)
       {
@@ -181,6 +182,21 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
   ToyRun clean;
   EXPECT_TRUE(fitPolyline(points, FitOptions{}, toyBuilder(clean)).Audit.preserving());
   EXPECT_EQ(clean.Builds, 1);
+}
+
+TEST(AutomaticShape, ASpanFailingOnlyWhatTheLadderCannotMendIsNotRaised)
+{
+  // The same twisted span, on a ladder declared not to mend a torsion sign
+  // on a span (qqr's): nothing is raised, the violation is left and counted.
+  const std::vector<Vec3> points = helix(16, 3);
+  constexpr int Twisted = 20;
+  const unsigned onSpan = 1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
+  ToyRun run;
+  const FittedPolyline fit =
+    fitPolyline(points, FitOptions{}, toyBuilder(run, 0.0, false, {}, Twisted, onSpan));
+  EXPECT_EQ(fit.Audit.violations(), 1);
+  EXPECT_EQ(fit.Audit.SpanMask[Twisted], onSpan);
+  EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
 }
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
