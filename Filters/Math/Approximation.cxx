@@ -393,20 +393,25 @@ struct CorrectedFit
   double Residual = std::numeric_limits<double>::infinity();
 };
 
+/// The fewest parameters u[0..count) that a span of the knots holds.
+int fewestHeld(const std::vector<double>& knots, const std::vector<double>& u, size_t count)
+{
+  std::vector<int> held(knots.size() - 1, 0);
+  for (size_t j = 0; j < count; ++j)
+  {
+    const auto after = std::upper_bound(knots.begin(), knots.end(), u[j]);
+    ++held[std::clamp<long>(after - knots.begin() - 1, 0, static_cast<long>(held.size()) - 1)];
+  }
+  return *std::min_element(held.begin(), held.end());
+}
+
 /// Whether every span of the extended knots holds at least two points: a
 /// span with one is decided by that point and its neighbours, and the
 /// corrected parameters of a wandering line (a random walk) can gather so
 /// that a dozen such spans in a row loop far from the points.
 bool everySpanHoldsTwoPoints(const ExtendedData& data)
 {
-  std::vector<int> held(data.Knots.size() - 1, 0);
-  for (const double u : data.Parameters)
-  {
-    const auto after = std::upper_bound(data.Knots.begin(), data.Knots.end(), u);
-    const auto span = std::clamp<long>(after - data.Knots.begin() - 1, 0, static_cast<long>(held.size()) - 1);
-    ++held[span];
-  }
-  return std::all_of(held.begin(), held.end(), [](int n) { return n >= 2; });
+  return fewestHeld(data.Knots, data.Parameters, data.Parameters.size()) >= 2;
 }
 
 CorrectedFit correctedFit(const std::vector<Vec3>& points, std::vector<double> u, int knots,
@@ -471,13 +476,40 @@ ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::
   int chosen = std::clamp(requestedKnots, lowest, std::max(lowest, highest));
   if (requestedKnots == CrossValidatedKnots)
   {
-    const std::map<int, double> scores = scoreCounts(lowest, highest,
+    std::map<int, double> scores = scoreCounts(lowest, highest,
       [&](int knots) { return gcvScore(fitted(knots).Residual, count, knots, closed); });
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& entry : scores)
+    auto bestScore = [&] {
+      std::pair<int, double> best(lowest, std::numeric_limits<double>::infinity());
+      for (const auto& [knots, score] : scores)
+      {
+        if (score < best.second)
+        {
+          best = { knots, score };
+        }
+      }
+      return best;
+    };
+    // Smoothing (the best count takes three points or more a knot): no count
+    // with a span of fewer than three points. Points at random places leave
+    // a few spans with one or two, where the third derivative, the torsion,
+    // follows their noise, which a score of positions hardly sees. Counts
+    // that all but interpolate keep such spans: a clean helix at 8 points a
+    // turn needs two points a span.
+    constexpr int SmoothingSpanPoints = 3;
+    if (count >= SmoothingSpanPoints * bestScore().first)
     {
-      best = std::min(best, entry.second);
+      for (auto& [knots, score] : scores)
+      {
+        const CorrectedFit& fit = fitted(knots);
+        if (std::isfinite(score) &&
+          fewestHeld(uniformKnots(fit.Parameters, closed ? knots + 1 : knots), fit.Parameters,
+            points.size()) < SmoothingSpanPoints)
+        {
+          score = std::numeric_limits<double>::infinity();
+        }
+      }
     }
+    const double best = bestScore().second;
     // The fewest knots within half a standard error of the best score.
     const double acceptable = best * (1.0 + 0.5 * std::sqrt(2.0 / count));
     chosen = lowest;

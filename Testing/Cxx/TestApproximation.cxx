@@ -321,3 +321,48 @@ TEST(Approximation, EveryFewKnotCountHasAFitOnDenseNoisyPoints)
     }
   }
 }
+
+namespace
+{
+/// The fewest of the points (parameters u) that a span of `knots` uniform knots holds.
+int fewestPointsInASpan(const std::vector<double>& u, int knots)
+{
+  const std::vector<double> at = uniformKnots(u, knots);
+  std::vector<int> held(at.size() - 1, 0);
+  for (const double v : u)
+  {
+    const long span = std::upper_bound(at.begin(), at.end(), v) - at.begin() - 1;
+    ++held[std::clamp<long>(span, 0, static_cast<long>(held.size()) - 1)];
+  }
+  return *std::min_element(held.begin(), held.end());
+}
+} // namespace
+
+TEST(Approximation, SmoothingLeavesNoSpanWithFewerThanThreePoints)
+{
+  // Noisy points at random places on a trefoil knot: the count taken leaves
+  // three points or more in every span (one or two let the torsion follow
+  // their noise). Clean coarse points (8 a turn, evenly spaced) keep the
+  // count that all but interpolates them, with two points a span.
+  const auto trefoilAt = [](double t) {
+    return Vec3(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t));
+  };
+  int fewest = 1000;
+  for (unsigned seed = 1; seed <= 8; ++seed)
+  {
+    const std::vector<Vec3> points = randomlySampled(trefoilAt, 0.0, 2 * Pi * 0.999, 60, 0.03, seed);
+    CleanPolyline data;
+    data.Points = points;
+    const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
+    const ApproximationPlan plan = planApproximation(points, u, 30, false, CrossValidatedKnots, true);
+    fewest = std::min(fewest, fewestPointsInASpan(plan.Parameters, plan.Knots));
+    EXPECT_GE(fewestPointsInASpan(plan.Parameters, plan.Knots), 3) << "seed " << seed << ", " << plan.Knots << " knots";
+  }
+  std::printf("random noisy trefoils: at least %d points a span\n", fewest);
+  CleanPolyline coarse;
+  coarse.Points = helix(8, 6);
+  const std::vector<double> u = computeKnots(coarse, Parameterization::ChordLength);
+  const ApproximationPlan plan = planApproximation(coarse.Points, u, 24, false, CrossValidatedKnots, true);
+  EXPECT_GE(plan.Knots, 20);
+  EXPECT_LE(fewestPointsInASpan(plan.Parameters, plan.Knots), 2);
+}
