@@ -94,8 +94,6 @@ public:
 private:
   /// Whole-curve audits after the first: a global solve moves far spans a little.
   static constexpr int MostWholeAudits = 4;
-  static constexpr unsigned TorsionSignOnSpanBit = 1u
-    << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
 
   /// What the bounds limit on a span.
   struct Figures
@@ -201,7 +199,8 @@ private:
         // neighbours: a span raised alone pushes its sign change into the
         // next span, which then fails in the round after. Raised together,
         // the three take half the rounds (measured on noisy helices).
-        if (this->RaiseTwistNeighbours && (this->Audit.SpanMask[j] & TorsionSignOnSpanBit))
+        const bool twists = this->Audit.SpanMask[j] & criterionBit(ShapeCriterion::TorsionSignOnSpan);
+        if (this->RaiseTwistNeighbours && twists)
         {
           raiseNeighbours(j);
         }

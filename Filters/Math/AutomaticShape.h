@@ -61,7 +61,7 @@ struct ShapeLadder
   /// lose their last violations that way; the quintic and qqr gained few or
   /// none for 1.3-2x the cost.
   bool RetrySpanBySpan = false;
-  /// Criteria (bits 1 << ShapeCriterion) the parameter does not mend: a span
+  /// Criteria (criterionBit) the parameter does not mend: a span
   /// failing only these is not raised (qqr: an exponent pulls a span towards
   /// its chord, which does not turn its torsion's sign).
   unsigned Unmendable = 0;

@@ -791,7 +791,7 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       ladder.Reach = 3; // a knot's exponent moves the spans on both sides and the global solve
       // Raised, a span nears its chord: its torsion's sign does not turn (on
       // noisy helices every violation left is one; raising for them only cost).
-      ladder.Unmendable = 1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
+      ladder.Unmendable = criterionBit(ShapeCriterion::TorsionSignOnSpan);
       ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
         const std::vector<int> perKnot = knotLevels(levels, data.Closed);
         std::vector<double> kappa(perKnot.size());

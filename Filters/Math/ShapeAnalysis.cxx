@@ -319,7 +319,7 @@ ShapeAudit ShapeAuditor::result() const
       {
         if (span >= 0 && span < static_cast<int>(spans))
         {
-          audit.SpanMask[span] |= 1u << static_cast<int>(f.Failure.Criterion);
+          audit.SpanMask[span] |= criterionBit(f.Failure.Criterion);
           audit.SpanDeficiency[span] += f.Deficiency;
         }
       }

@@ -72,6 +72,12 @@ enum class ShapeCriterion : int
 };
 const char* shapeCriterionName(ShapeCriterion criterion);
 
+/// The criterion's bit in ShapeAudit::SpanMask.
+constexpr unsigned criterionBit(ShapeCriterion criterion)
+{
+  return 1u << static_cast<int>(criterion);
+}
+
 /// What the audit needs of one curve sample.
 struct AuditSample
 {

@@ -190,7 +190,7 @@ TEST(AutomaticShape, ASpanFailingOnlyWhatTheLadderCannotMendIsNotRaised)
   // on a span (qqr's): nothing is raised, the violation is left and counted.
   const std::vector<Vec3> points = helix(16, 3);
   constexpr int Twisted = 20;
-  const unsigned onSpan = 1u << static_cast<int>(ShapeCriterion::TorsionSignOnSpan);
+  const unsigned onSpan = criterionBit(ShapeCriterion::TorsionSignOnSpan);
   ToyRun run;
   const FittedPolyline fit =
     fitPolyline(points, FitOptions{}, toyBuilder(run, 0.0, false, {}, Twisted, onSpan));

@@ -97,7 +97,7 @@ TEST(ShapeAudit, CubicBreaksTheAkimaShape)
   EXPECT_GT(failures(fit.Audit, ShapeCriterion::Collinearity), 0);
   EXPECT_FALSE(fit.Audit.preserving());
   // Wiggles on the flat run: spans 0..4 are marked.
-  EXPECT_NE(fit.Audit.SpanMask[2] & (1u << static_cast<int>(ShapeCriterion::Collinearity)), 0u);
+  EXPECT_NE(fit.Audit.SpanMask[2] & criterionBit(ShapeCriterion::Collinearity), 0u);
   EXPECT_EQ(failures(fit.Audit, ShapeCriterion::Coplanarity), 0);
 }
 
