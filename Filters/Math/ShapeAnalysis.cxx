@@ -172,6 +172,15 @@ bool ShapeAuditor::twistReversesAt(int i) const
   }
   const int before = (i - 1 + spans) % spans, after = i % spans;
   const DiscreteShape& shape = this->Shape;
+  // An open line's end spans have no discrete torsion (it takes a segment
+  // on each side): whether the torsion reverses at the knot next to an end
+  // the data cannot say, so the curve may change sign there once, as where
+  // they reverse (a trefoil's torsion changes sign a third of a span in).
+  if (!this->Data.Closed && (i == 1 || i == spans - 1))
+  {
+    const int inner = i == 1 ? after : before;
+    return shape.Twisted[inner] && !shape.Twisted[i == 1 ? before : after];
+  }
   return shape.Twisted[before] && shape.Twisted[after] &&
     shape.Torsion[before] * shape.Torsion[after] < 0;
 }

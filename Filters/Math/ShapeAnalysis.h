@@ -139,7 +139,9 @@ struct ShapeAudit
  * and (iv) would ask it to do so exactly at the knot: there the torsion may
  * change sign once anywhere on the two spans around the knot (the samples of
  * the wrong sign must run from the knot), as (ii.2) lets the curvature change
- * sign on a span whose ends turn opposite ways. What a sample finds is kept with its span, so that the samples of
+ * sign on a span whose ends turn opposite ways; likewise at an open line's
+ * knot next to an end, whose end span has no discrete torsion to say whether
+ * it reverses there. What a sample finds is kept with its span, so that the samples of
  * one span can be audited again (forget(), then add()) after the curve
  * changed there. The data and shape must outlive the auditor.
  */
@@ -163,7 +165,8 @@ private:
   void fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA, int spanB,
     double deficiency);
   double signedCurvature(const FrenetFrame& frame, int point) const;
-  /// Whether the data's torsion changes sign at knot i (both segments twisted).
+  /// Whether the data's torsion changes sign at knot i (both segments
+  /// twisted), or may (an open line's knot next to an end, its inner span twisted).
   bool twistReversesAt(int i) const;
   /// A span next to such a knot: the torsion's failure beyond the one sign change allowed.
   double transitionDeficiency(int span) const;

@@ -192,3 +192,37 @@ TEST(DiscreteShape, ExactDoublingBackIsFinite)
   }
   EXPECT_FALSE(shape.Collinear[1]); // turning back is not a straight run
 }
+
+TEST(ShapeAudit, TorsionMayChangeSignOnceNextToAnOpenEnd)
+{
+  // An open line's end spans have no discrete torsion, so the data cannot
+  // say whether the torsion reverses at the knot next to an end: the curve
+  // may change sign once there (a trefoil's torsion does, a third of a span
+  // in), as where the data reverse. Inside, and away from that knot, the
+  // sign still holds on every span.
+  const FittedPolyline fit = fitPolyline(helix(8, 2), FitOptions{}, cubicBuilder());
+  const int spans = fit.Data.numberOfSpans();
+  ASSERT_TRUE(fit.Shape.Twisted[1] && fit.Shape.Twisted[spans - 2]);
+  ASSERT_FALSE(fit.Shape.Twisted[0] || fit.Shape.Twisted[spans - 1]);
+  const SampledCurve sampled = sampleFit(fit);
+  // The curve's torsion made negative where `wrong` says, u in spans from the first point.
+  auto failing = [&](const std::function<bool(double)>& wrong) {
+    std::vector<AuditSample> samples(sampled.Samples.size());
+    for (int k = 0; k < sampled.Samples.size(); ++k)
+    {
+      samples[k].Span = sampled.Samples.Span[k];
+      samples[k].Frame = sampled.Frames[k];
+      const double u = samples[k].Span + sampled.Samples.SpanFraction[k];
+      const double torsion = std::abs(samples[k].Frame.Torsion);
+      samples[k].Frame.Torsion = wrong(u) ? -torsion : torsion;
+    }
+    markKnots(samples, false);
+    return failures(auditShape(fit.Data, fit.Shape, samples), ShapeCriterion::TorsionSignOnSpan);
+  };
+  EXPECT_EQ(failing([](double) { return false; }), 0);
+  EXPECT_EQ(failing([](double u) { return u < 1.4; }), 0);          // changes once in span 1
+  EXPECT_EQ(failing([&](double u) { return u > spans - 1.3; }), 0); // in the last span but one
+  EXPECT_EQ(failing([](double u) { return u > 1.6 && u < 2.0; }), 1); // span 1's far end: no
+  EXPECT_EQ(failing([](double u) { return u > 3.0 && u < 3.4; }), 1); // an inner span: no
+  EXPECT_EQ(failing([](double u) { return u >= 1.0 && u <= 2.0; }), 1); // all of span 1: no
+}
