@@ -33,6 +33,23 @@ std::vector<AuditSample> editedSamples(const FittedPolyline& fit, Edit edit)
   markKnots(samples, fit.Data.Closed);
   return samples;
 }
+
+/// TorsionSignOnSpan failures of an open fit whose torsion is made
+/// torsion(u, the curve's torsion), u in spans from the first point.
+int torsionFailures(const FittedPolyline& fit, const std::function<double(double, double)>& torsion)
+{
+  const SampledCurve sampled = sampleFit(fit);
+  std::vector<AuditSample> samples(sampled.Samples.size());
+  for (int k = 0; k < sampled.Samples.size(); ++k)
+  {
+    samples[k].Span = sampled.Samples.Span[k];
+    samples[k].Frame = sampled.Frames[k];
+    samples[k].Frame.Torsion =
+      torsion(samples[k].Span + sampled.Samples.SpanFraction[k], sampled.Frames[k].Torsion);
+  }
+  markKnots(samples, false);
+  return failures(auditShape(fit.Data, fit.Shape, samples), ShapeCriterion::TorsionSignOnSpan);
+}
 } // namespace
 
 TEST(DiscreteShape, HelixHasPositiveTorsionAndConvergingCurvature)
@@ -157,18 +174,9 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
     ASSERT_TRUE(shape.Twisted[j]) << j;
     ASSERT_EQ(shape.Torsion[j] > 0, j >= knot) << j; // a single change, at the knot
   }
-  const SampledCurve sampled = sampleFit(fit);
   // The curve's torsion as a function of u, in spans from the first point.
   auto failing = [&](const std::function<double(double)>& torsion) {
-    std::vector<AuditSample> samples(sampled.Samples.size());
-    for (int k = 0; k < sampled.Samples.size(); ++k)
-    {
-      samples[k].Span = sampled.Samples.Span[k];
-      samples[k].Frame = sampled.Frames[k];
-      samples[k].Frame.Torsion = torsion(samples[k].Span + sampled.Samples.SpanFraction[k]);
-    }
-    markKnots(samples, false);
-    return failures(auditShape(fit.Data, shape, samples), ShapeCriterion::TorsionSignOnSpan);
+    return torsionFailures(fit, [&](double u, double) { return torsion(u); });
   };
   auto crossingAt = [](double where) { return [where](double u) { return u - where; }; };
   EXPECT_EQ(failing(crossingAt(knot)), 0);       // Definition 1's own case
@@ -204,20 +212,10 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceNextToAnOpenEnd)
   const int spans = fit.Data.numberOfSpans();
   ASSERT_TRUE(fit.Shape.Twisted[1] && fit.Shape.Twisted[spans - 2]);
   ASSERT_FALSE(fit.Shape.Twisted[0] || fit.Shape.Twisted[spans - 1]);
-  const SampledCurve sampled = sampleFit(fit);
   // The curve's torsion made negative where `wrong` says, u in spans from the first point.
   auto failing = [&](const std::function<bool(double)>& wrong) {
-    std::vector<AuditSample> samples(sampled.Samples.size());
-    for (int k = 0; k < sampled.Samples.size(); ++k)
-    {
-      samples[k].Span = sampled.Samples.Span[k];
-      samples[k].Frame = sampled.Frames[k];
-      const double u = samples[k].Span + sampled.Samples.SpanFraction[k];
-      const double torsion = std::abs(samples[k].Frame.Torsion);
-      samples[k].Frame.Torsion = wrong(u) ? -torsion : torsion;
-    }
-    markKnots(samples, false);
-    return failures(auditShape(fit.Data, fit.Shape, samples), ShapeCriterion::TorsionSignOnSpan);
+    return torsionFailures(
+      fit, [&](double u, double torsion) { return wrong(u) ? -std::abs(torsion) : std::abs(torsion); });
   };
   EXPECT_EQ(failing([](double) { return false; }), 0);
   EXPECT_EQ(failing([](double u) { return u < 1.4; }), 0);          // changes once in span 1
