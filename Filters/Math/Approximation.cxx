@@ -663,10 +663,81 @@ bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, b
   return fewer && more && *fewer < *more; // no verdict where a fit fails
 }
 
-double referenceNoise(const ApproximationPlan& plan, int knots, int points)
+namespace
 {
-  return plan.NoiseLevel * std::sqrt(std::max(1.0, static_cast<double>(knots)) / (0.5 * points));
+/// The span of each of the first `count` parameters u and the two hat
+/// functions of L*'s vertices on it, passed to visit(vertex, vertex, hat, hat).
+template <class Visit>
+void forEachHatPair(const std::vector<double>& u, size_t count, const std::vector<double>& knots,
+  bool closed, const Visit& visit)
+{
+  const int spans = static_cast<int>(knots.size()) - 1;
+  const int vertices = closed ? spans : spans + 1; // a closed polygon's last vertex is its first
+  for (size_t j = 0; j < count; ++j)
+  {
+    const double t = u[j];
+    const int span = std::clamp(
+      static_cast<int>(std::upper_bound(knots.begin(), knots.end(), t) - knots.begin()) - 1, 0,
+      spans - 1);
+    const double w = (t - knots[span]) / (knots[span + 1] - knots[span]);
+    visit(span, (span + 1) % vertices, 1.0 - w, w);
+  }
 }
+
+/// A symmetric positive definite tridiagonal matrix (diagonal d, off-diagonal
+/// e) as L D L^T, L unit lower bidiagonal with subdiagonal l.
+struct TridiagonalLDL
+{
+  std::vector<double> D, L;
+
+  TridiagonalLDL(const std::vector<double>& d, const std::vector<double>& e)
+    : D(d)
+    , L(e.size())
+  {
+    for (size_t i = 0; i < e.size(); ++i)
+    {
+      this->L[i] = e[i] / this->D[i];
+      this->D[i + 1] -= this->L[i] * e[i];
+    }
+    if (!std::all_of(this->D.begin(), this->D.end(), [](double pivot) { return pivot > 0.0; }))
+    {
+      throw std::runtime_error("a vertex of the least-squares polygon rests on no point");
+    }
+  }
+
+  /// The diagonal of the inverse (Takahashi's recurrence: Z_ii = 1 / D_i + l_i^2 Z_{i+1,i+1}).
+  std::vector<double> inverseDiagonal() const
+  {
+    std::vector<double> z(this->D.size());
+    z.back() = 1.0 / this->D.back();
+    for (size_t i = this->L.size(); i-- > 0;)
+    {
+      z[i] = 1.0 / this->D[i] + this->L[i] * this->L[i] * z[i + 1];
+    }
+    return z;
+  }
+
+  /// The inverse's column `column`.
+  std::vector<double> solveUnit(size_t column) const
+  {
+    std::vector<double> x(this->D.size(), 0.0);
+    x[column] = 1.0;
+    for (size_t i = 0; i < this->L.size(); ++i)
+    {
+      x[i + 1] -= this->L[i] * x[i];
+    }
+    for (size_t i = 0; i < x.size(); ++i)
+    {
+      x[i] /= this->D[i];
+    }
+    for (size_t i = this->L.size(); i-- > 0;)
+    {
+      x[i] -= this->L[i] * x[i + 1];
+    }
+    return x;
+  }
+};
+} // namespace
 
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots, bool closed)
@@ -674,16 +745,12 @@ std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
   const int spans = static_cast<int>(knots.size()) - 1;
   const int k = closed ? spans : spans + 1; // a closed polygon's last vertex is its first
   NormalEquations normal(k);
-  for (size_t j = 0; j < points.size(); ++j)
-  {
-    const int span = std::clamp(
-      static_cast<int>(std::upper_bound(knots.begin(), knots.end(), u[j]) - knots.begin()) - 1, 0,
-      spans - 1);
-    const double w = (u[j] - knots[span]) / (knots[span + 1] - knots[span]);
-    const double hat[2] = { 1.0 - w, w };
-    const int vertex[2] = { span, (span + 1) % k };
-    normal.add(vertex, hat, 2, points[j]);
-  }
+  size_t j = 0;
+  forEachHatPair(u, points.size(), knots, closed, [&](int a, int b, double hatA, double hatB) {
+    const int vertex[2] = { a, b };
+    const double hat[2] = { hatA, hatB };
+    normal.add(vertex, hat, 2, points[j++]);
+  });
   const Eigen::MatrixX3d solution = normal.solve();
   std::vector<Vec3> vertices(k);
   for (int i = 0; i < k; ++i)
@@ -691,5 +758,60 @@ std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
     vertices[i] = solution.row(i).transpose();
   }
   return vertices;
+}
+
+std::vector<double> leastSquaresPolygonNoise(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed)
+{
+  const int spans = static_cast<int>(knots.size()) - 1;
+  const int k = closed ? spans : spans + 1;
+  // The normal matrix H = A^T A of the hat functions: tridiagonal, and for a
+  // closed polygon one more entry, `corner`, joining its last vertex to its first.
+  std::vector<double> diagonal(k, 0.0), off(k - 1, 0.0);
+  double corner = 0.0;
+  forEachHatPair(u, points.size(), knots, closed, [&](int a, int b, double hatA, double hatB) {
+    diagonal[a] += hatA * hatA;
+    diagonal[b] += hatB * hatB;
+    (b == a + 1 ? off[a] : corner) += hatA * hatB;
+  });
+  const TridiagonalLDL open(diagonal, off);
+  std::vector<double> variance = open.inverseDiagonal();
+  if (corner != 0.0)
+  {
+    // H = T + U C U^T, U = [e_0, e_last], C = [0 c; c 0] (Woodbury):
+    // diag(H^-1) = diag(T^-1) - y_i^T (I + C W)^-1 C y_i, y_i row i of T^-1 U, W = U^T T^-1 U.
+    const std::vector<double> first = open.solveUnit(0), last = open.solveUnit(k - 1);
+    Eigen::Matrix2d c;
+    c << 0.0, corner, corner, 0.0;
+    Eigen::Matrix2d w;
+    w << first[0], first[k - 1], last[0], last[k - 1];
+    const Eigen::Matrix2d s = (Eigen::Matrix2d::Identity() + c * w).inverse() * c;
+    for (int i = 0; i < k; ++i)
+    {
+      const Eigen::Vector2d y(first[i], last[i]);
+      variance[i] -= y.dot(s * y);
+    }
+  }
+  std::vector<double> noise(k);
+  std::transform(variance.begin(), variance.end(), noise.begin(),
+    [](double v) { return std::sqrt(std::max(v, 0.0)); });
+  return noise;
+}
+
+ReferencePolygon referencePolygon(const ExtendedData& data, bool closed, double pointNoise)
+{
+  ReferencePolygon reference;
+  reference.Whole = leastSquaresPolygon(data.Points, data.Parameters, data.Knots, closed);
+  const std::vector<double> noise = leastSquaresPolygonNoise(data.Points, data.Parameters, data.Knots, closed);
+  const int spans = static_cast<int>(data.Knots.size()) - 1 - 2 * data.Extra;
+  const int vertices = closed ? spans : spans + 1;
+  reference.Polygon.Points.assign(
+    reference.Whole.begin() + data.Extra, reference.Whole.begin() + data.Extra + vertices);
+  reference.Polygon.Closed = closed;
+  for (int i = 0; i < vertices; ++i)
+  {
+    reference.VertexNoise.push_back(pointNoise * noise[data.Extra + i]);
+  }
+  return reference;
 }
 } // namespace shapesplines

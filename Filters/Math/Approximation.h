@@ -141,11 +141,6 @@ ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::
  */
 bool looksNoisy(const std::vector<Vec3>& points, const std::vector<double>& u, bool closed);
 
-/// How far the vertices of a reference polygon on `knots` knots (L*, psi)
-/// move with the noise of `points` points: the noise level over the root of
-/// the points a vertex rests on (about 2 N / K: its two spans).
-double referenceNoise(const ApproximationPlan& plan, int knots, int points);
-
 /// The fewest knots an approximation takes: 2, or 3 distinct ones when closed.
 inline int lowestKnotCount(bool closed)
 {
@@ -208,6 +203,37 @@ auto approximateWithPlan(const std::vector<Vec3>& points, const std::vector<doub
  */
 std::vector<Vec3> leastSquaresPolygon(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots, bool closed = false);
+
+/**
+ * How far each vertex of leastSquaresPolygon(points, u, knots, closed) moves
+ * with the noise of the points (whose positions it does not read), per unit
+ * of it: sqrt((H^-1)_ii), H the normal matrix of the hat functions at u
+ * (points off the curve independently, each by the unit). On points spread
+ * evenly, N of them on K knots, that is sqrt(sqrt(3) K / N) inside (the Gram
+ * matrix of hat functions, [1/6 2/3 1/6] per point per span, has an inverse
+ * whose diagonal tends to sqrt(3)), more at an open polygon's ends and where
+ * the points are sparse. Throws std::runtime_error when a vertex rests on no
+ * point.
+ */
+std::vector<double> leastSquaresPolygonNoise(const std::vector<Vec3>& points,
+  const std::vector<double>& u, const std::vector<double>& knots, bool closed = false);
+
+/// An approximation's reference polygon (L*, psi) and how far its vertices
+/// move with the noise of the points.
+struct ReferencePolygon
+{
+  /// leastSquaresPolygon of the extended data: one vertex per knot, beyond an open line's ends too.
+  std::vector<Vec3> Whole;
+  /// Its vertices on the data's knots: the polygon whose shape the curve keeps.
+  CleanPolyline Polygon;
+  /// Per vertex of Polygon: pointNoise times leastSquaresPolygonNoise (the
+  /// mirrored points counted as independent ones).
+  std::vector<double> VertexNoise;
+};
+
+/// The reference polygon of an approximation of data whose points are off
+/// the curve by about pointNoise (the plan's NoiseLevel).
+ReferencePolygon referencePolygon(const ExtendedData& data, bool closed, double pointNoise);
 } // namespace shapesplines
 
 #endif

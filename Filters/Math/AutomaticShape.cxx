@@ -112,13 +112,16 @@ private:
   /// ShapeBounds::CurvatureChange); 1 when that bound is off.
   double curvatureChange(int j) const
   {
+    const std::vector<double>& vertexNoise = this->Ladder.ReferenceNoise;
     if (this->Ladder.Bounds.CurvatureChange <= 0.0 || this->StartCurvatures.empty())
     {
       return 1.0;
     }
     const double chord = this->Reference.segment(j).norm();
-    const double noise =
-      NoiseSignificance * 8.0 * this->Ladder.ReferenceNoise / std::max(chord * chord, 1e-300);
+    const double sagitta = vertexNoise.empty()
+      ? 0.0
+      : std::max(vertexNoise[j], vertexNoise[(j + 1) % vertexNoise.size()]);
+    const double noise = NoiseSignificance * 8.0 * sagitta / std::max(chord * chord, 1e-300);
     const std::vector<double>& start = this->StartCurvatures[j];
     const std::vector<double>& now = this->Auditor.sampleCurvatures(j);
     double change = 1.0;

@@ -34,8 +34,9 @@ struct ShapeBounds
   /// Approximations (0: none): the curvature at every sample stays within
   /// this factor of the level-0 curve's, wherever that stands above what the
   /// reference's noise can bend (NoiseSignificance times the curvature of an
-  /// arc with ShapeLadder::ReferenceNoise of sagitta over the span's
-  /// segment): keeping a noisy polygon's shape must not flatten the curve.
+  /// arc whose sagitta over the span's segment is the larger
+  /// ShapeLadder::ReferenceNoise of its vertices): keeping a noisy polygon's
+  /// shape must not flatten the curve.
   double CurvatureChange = 0.0;
 };
 
@@ -67,9 +68,9 @@ struct ShapeLadder
   unsigned Unmendable = 0;
   int MaxRounds = 64;
   ShapeBounds Bounds;
-  /// How far the reference polygon's vertices move with the noise (see
-  /// discreteShape): 0 for an interpolation's data.
-  double ReferenceNoise = 0.0;
+  /// Per vertex of the reference polygon, how far it moves with the noise
+  /// (see discreteShape): empty for an interpolation's data.
+  std::vector<double> ReferenceNoise;
 };
 
 /// The automatic mode's curve, its audit against the reference and the levels chosen.

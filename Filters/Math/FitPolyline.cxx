@@ -207,8 +207,8 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
-ShapeAudit FitContext::audit(
-  const Curve& curve, const CleanPolyline& reference, double referenceNoise) const
+ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
+  const std::vector<double>& referenceNoise) const
 {
   return auditCurve(curve, reference,
     discreteShape(reference, this->Options.Tolerances, referenceNoise),

@@ -48,8 +48,10 @@ struct FitContext
   /// The audit of a curve against the Definition 1 shape of reference, a
   /// polygon with one vertex per knot of the curve: the data for an
   /// interpolation, the least-squares polygon for an approximation (whose
-  /// vertices move by referenceNoise with the noise, see discreteShape).
-  ShapeAudit audit(const Curve& curve, const CleanPolyline& reference, double referenceNoise = 0.0) const;
+  /// vertices move by referenceNoise, one per vertex, with the noise, see
+  /// discreteShape).
+  ShapeAudit audit(const Curve& curve, const CleanPolyline& reference,
+    const std::vector<double>& referenceNoise = {}) const;
 };
 
 /// A family's curve and, for an approximation, the polygon whose shape it keeps.
@@ -66,10 +68,10 @@ struct BuiltCurve
   /// builder corrected the given ones (planApproximation).
   std::optional<std::vector<double>> DataParameters;
   /// Approximations: the points' root-mean-square distance from the curve
-  /// (normalised frame), and how far the reference polygon's vertices can
+  /// (normalised frame), and per vertex of ShapeReference how far it can
   /// move with that noise (see discreteShape).
   double NoiseLevel = 0.0;
-  double ReferenceNoise = 0.0;
+  std::vector<double> ReferenceNoise;
 };
 
 using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;

@@ -35,9 +35,13 @@ const char* shapeCriterionName(ShapeCriterion criterion)
 }
 
 DiscreteShape discreteShape(
-  const CleanPolyline& data, const ShapeTolerances& tolerances, double vertexNoise)
+  const CleanPolyline& data, const ShapeTolerances& tolerances, const std::vector<double>& vertexNoise)
 {
   const int n = static_cast<int>(data.Points.size());
+  // How far segment i's direction turns with its vertices' noise, times its length.
+  auto segmentNoise = [&](int i) {
+    return vertexNoise.empty() ? 0.0 : vertexNoise[i] + vertexNoise[(i + 1) % n];
+  };
   const int spans = data.numberOfSpans();
   DiscreteShape shape;
   shape.Binormal.assign(n, Vec3::Zero());
@@ -74,7 +78,7 @@ DiscreteShape discreteShape(
     const double turn = shape.Binormal[i].norm();
     const bool straight = turn <= tolerances.Data;
     // What the vertices' noise can do to the turning sine: both directions turn.
-    const double noiseTurn = 2.0 * vertexNoise * (1.0 / length[before] + 1.0 / length[i]);
+    const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
     const bool significant = turn > NoiseSignificance * noiseTurn;
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Convex[i] = !straight && significant;
@@ -97,9 +101,9 @@ DiscreteShape discreteShape(
     const bool flat = std::abs(triple) <= tolerances.Data || !(crosses > 0);
     // What the vertices' noise can do to the triple product: each of the
     // three directions turns by about noise / length out of the others' plane.
-    const double noiseTwist = 2.0 * vertexNoise *
-      (b.cross(c).norm() / length[before] + (a.cross(b).norm() + b.cross(c).norm()) / length[i] +
-        a.cross(b).norm() / length[next]);
+    const double noiseTwist = b.cross(c).norm() * segmentNoise(before) / length[before] +
+      (a.cross(b).norm() + b.cross(c).norm()) * segmentNoise(i) / length[i] +
+      a.cross(b).norm() * segmentNoise(next) / length[next];
     const bool significant = std::abs(triple) > NoiseSignificance * noiseTwist;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat;

@@ -41,17 +41,18 @@ struct DiscreteShape
 };
 
 /**
- * The discrete shape of data. vertexNoise > 0 (the reference polygon of an
- * approximation, whose vertices move by about that much with the noise of
- * the points): a turn or a twist counts only where it stands out of what
- * that noise can make, NoiseSignificance times the change it causes in the
- * turning sine (its segments' directions turn by vertexNoise / length) or in
- * the normalised triple product; below (but above tolerances.Data), the
- * point is neither convex nor collinear, the segment neither twisted nor
- * coplanar: no criterion applies there.
+ * The discrete shape of data. vertexNoise, one per point (the reference
+ * polygon of an approximation, whose vertices move by about that much with
+ * the noise of the points; empty: none): a turn or a twist counts only where
+ * it stands out of what that noise can make, NoiseSignificance times the
+ * change it causes in the turning sine (a segment's direction turns by its
+ * vertices' noise over its length) or in the normalised triple product;
+ * below (but above tolerances.Data), the point is neither convex nor
+ * collinear, the segment neither twisted nor coplanar: no criterion applies
+ * there.
  */
-DiscreteShape discreteShape(
-  const CleanPolyline& data, const ShapeTolerances& tolerances = {}, double vertexNoise = 0.0);
+DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
+  const std::vector<double>& vertexNoise = {});
 
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).

@@ -56,16 +56,13 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
 
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitContext& context, double referenceNoise)
+  const FitContext& context, double pointNoise)
 {
   const ExtendedData data = extendForApproximation(points, u, numberOfKnots, closed);
   const int spans = closed ? numberOfKnots : numberOfKnots - 1;
-  const std::vector<Vec3> polygon = leastSquaresPolygon(data.Points, data.Parameters, data.Knots, closed);
-  CleanPolyline reference;
-  reference.Points.assign(polygon.begin() + data.Extra, polygon.begin() + data.Extra + (closed ? spans : spans + 1));
-  reference.Closed = closed;
+  ReferencePolygon reference = referencePolygon(data, closed, pointNoise);
   ShapeLadder ladder = quinticLadder(quintic);
-  ladder.ReferenceNoise = referenceNoise;
+  ladder.ReferenceNoise = reference.VertexNoise;
   ladder.Bounds.CurvatureChange = 2.0; // keeping L*'s shape must not flatten the fit
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
     const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
@@ -77,12 +74,13 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
     }
     return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
   };
-  BuiltCurve built = fixedOrAutomatic(quintic.Automatic, context, reference, ladder);
+  BuiltCurve built = fixedOrAutomatic(quintic.Automatic, context, reference.Polygon, ladder);
   QuinticApproximation result;
   result.Spline = std::move(built.Spline);
   result.Audit = std::move(built.Audit);
   result.Knots = std::vector<double>(data.Knots.begin() + data.Extra, data.Knots.end() - data.Extra);
-  result.Polygon = std::move(reference.Points);
+  result.Polygon = std::move(reference.Polygon.Points);
+  result.VertexNoise = std::move(reference.VertexNoise);
   return result;
 }
 
@@ -101,9 +99,8 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
     std::optional<BuiltCurve> approximation = approximateWithPlan(points, context.Knots,
       quintic.ApproximationKnots, closed, highest, quintic.CorrectParameters, context.Options.Progress,
       [&](const ApproximationPlan& plan, int knots) {
-        const double noise = referenceNoise(plan, knots, count);
         QuinticApproximation fitted = approximateKeepingTorsionSigns(
-          points, plan.Parameters, knots, closed, quintic, context, noise);
+          points, plan.Parameters, knots, closed, quintic, context, plan.NoiseLevel);
         BuiltCurve built;
         built.Spline = std::move(fitted.Spline);
         built.Audit = std::move(fitted.Audit);
@@ -113,7 +110,7 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
         built.ShapeReference = std::move(reference);
         built.DataParameters = plan.Parameters;
         built.NoiseLevel = plan.NoiseLevel;
-        built.ReferenceNoise = noise;
+        built.ReferenceNoise = std::move(fitted.VertexNoise);
         return built;
       });
     return approximation ? std::move(*approximation) : interpolate(context, quintic);

@@ -44,6 +44,7 @@ struct QuinticApproximation
   std::unique_ptr<Curve> Spline;
   std::vector<double> Knots;  ///< placed uniformly in the data parameter (closed: with the closing one)
   std::vector<Vec3> Polygon;  ///< L*, one vertex per (distinct) knot
+  std::vector<double> VertexNoise; ///< per vertex of L*, how far it moves with the points' noise
   std::optional<ShapeAudit> Audit; ///< against L*, when the automatic mode made it
 };
 
@@ -53,12 +54,13 @@ struct QuinticApproximation
  * it keeps the shape (Definition 1, torsion signs included) of L*, the
  * least-squares polygon on the same knots, lowering the tension from 1 on the
  * spans that break it (preserveShapeAutomatically), counting only what
- * stands out of referenceNoise (see discreteShape). Closed: a closed curve
+ * stands out of what points off the curve by about pointNoise move L*'s
+ * vertices by (referencePolygon, discreteShape). Closed: a closed curve
  * with numberOfKnots distinct knots (>= 3), u with the closing parameter.
  */
 QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& points,
   const std::vector<double>& u, int numberOfKnots, bool closed, const QuinticFitOptions& quintic,
-  const FitContext& context, double referenceNoise = 0.0);
+  const FitContext& context, double pointNoise = 0.0);
 } // namespace shapesplines
 
 #endif

@@ -535,10 +535,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   const int spans = closed ? knotCount : knotCount - 1;
   const ExtendedData data = extendForApproximation(context.Data.Points, plan.Parameters, knotCount, closed);
   const int allKnots = closed ? knotCount : static_cast<int>(data.Knots.size());
-  CleanPolyline psi;
-  const std::vector<Vec3> polygon = leastSquaresPolygon(data.Points, data.Parameters, data.Knots, closed);
-  psi.Points.assign(polygon.begin() + data.Extra, polygon.begin() + data.Extra + (closed ? spans : spans + 1));
-  psi.Closed = closed;
+  ReferencePolygon psi = referencePolygon(data, closed, plan.NoiseLevel);
   const std::vector<double> start(allKnots, startDegree);
   const bool local = options.Mode == VariableDegreeMode::ApproximateLocal;
   // The local scheme also pulls the curve towards psi at the knots of raised
@@ -551,8 +548,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   ladder.MaxRounds = options.MaxRounds;
   ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
   ladder.Uniform = !local; // the global scheme: every degree together (Theorem 4)
-  const int points = static_cast<int>(context.Data.Points.size());
-  ladder.ReferenceNoise = referenceNoise(plan, knotCount, points);
+  ladder.ReferenceNoise = psi.VertexNoise;
   ladder.Bounds.CurvatureChange = 2.0; // keeping psi's shape must not flatten the fit
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
     const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
@@ -564,7 +560,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
     }
     auto whole = std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::approximate(data.Points,
       data.Parameters, data.Knots, closed,
-      parametersFor(degreesAt(start, all, closed, options.MaxDegree), options, false), weights, polygon,
+      parametersFor(degreesAt(start, all, closed, options.MaxDegree), options, false), weights, psi.Whole,
       false));
     if (data.Extra == 0)
     {
@@ -572,11 +568,11 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
     }
     return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
   };
-  BuiltCurve built = fixedOrAutomatic(options.Automatic, context, psi, ladder);
-  built.ShapeReference = std::move(psi);
+  BuiltCurve built = fixedOrAutomatic(options.Automatic, context, psi.Polygon, ladder);
+  built.ShapeReference = std::move(psi.Polygon);
   built.DataParameters = plan.Parameters;
   built.NoiseLevel = plan.NoiseLevel;
-  built.ReferenceNoise = ladder.ReferenceNoise;
+  built.ReferenceNoise = std::move(psi.VertexNoise);
   return built;
 }
 } // namespace

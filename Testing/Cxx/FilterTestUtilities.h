@@ -579,7 +579,8 @@ inline void ExpectDataPointsAmongSamples(
  * line, where the first's stands out of what its noise can bend (three
  * times the curvature of an arc with the reference's vertex noise as sagitta
  * over a span, from the cell arrays NoiseLevel, NumberOfKnots and Length,
- * and the line's points): what an automatic approximation may change
+ * and the line's points; the noise of a vertex inside evenly spread points,
+ * within 10%, see leastSquaresPolygonNoise): what an automatic approximation may change
  * (ShapeBounds::CurvatureChange).
  */
 inline double CurvatureChange(vtkPolyData* fixed, vtkPolyData* automatic, vtkIdType line, double points)

@@ -447,3 +447,90 @@ TEST(Approximation, KnotsGatherWhereTheCurveBends)
   }
   std::printf("noisy growing spirals: median torsion error at most %.1f%%\n", 100 * worst);
 }
+
+TEST(Approximation, ReferencePolygonNoiseIsWhatTheNoiseDoesToItsVertices)
+{
+  // Points of a plane curve at random parameters (sparse and dense stretches),
+  // each coordinate off by Gaussian noise of sigma: over 600 draws, each
+  // vertex of the least-squares polygon spreads, per coordinate, by what
+  // leastSquaresPolygonNoise says per unit (sigma), open and closed.
+  constexpr double Sigma = 0.01;
+  for (const bool closed : { false, true })
+  {
+    std::mt19937 random(closed ? 5 : 4);
+    std::uniform_real_distribution<double> at(0.0, 1.0);
+    std::vector<double> u(240);
+    for (double& t : u)
+    {
+      t = at(random);
+      // Denser near one end (a closed line: near where it closes, so that the
+      // closing span, which couples the last vertex to the first, matters).
+      t = closed ? 1.0 - t * t : t * t;
+    }
+    std::sort(u.begin(), u.end());
+    u.front() = 0.0;
+    u.back() = 1.0;
+    const int spans = 18;
+    const std::vector<double> knots = uniformKnots(u, spans + 1);
+    const std::vector<double> predicted =
+      leastSquaresPolygonNoise(std::vector<Vec3>(u.size(), Vec3::Zero()), u, knots, closed);
+    ASSERT_EQ(predicted.size(), static_cast<size_t>(closed ? spans : spans + 1));
+
+    std::normal_distribution<double> noise(0.0, Sigma);
+    std::vector<double> squares(predicted.size(), 0.0);
+    constexpr int Draws = 600;
+    for (int draw = 0; draw < Draws; ++draw)
+    {
+      std::vector<Vec3> points;
+      for (const double t : u)
+      {
+        points.emplace_back(std::cos(2.0 * M_PI * t) + noise(random),
+          std::sin(2.0 * M_PI * t) + noise(random), noise(random));
+      }
+      const std::vector<Vec3> noisy = leastSquaresPolygon(points, u, knots, closed);
+      const std::vector<Vec3> exact = [&] {
+        std::vector<Vec3> onCurve;
+        for (const double t : u)
+        {
+          onCurve.emplace_back(std::cos(2.0 * M_PI * t), std::sin(2.0 * M_PI * t), 0.0);
+        }
+        return leastSquaresPolygon(onCurve, u, knots, closed);
+      }();
+      for (size_t i = 0; i < predicted.size(); ++i)
+      {
+        squares[i] += (noisy[i] - exact[i]).squaredNorm() / 3.0;
+      }
+    }
+    double sparsest = 0.0, densest = 1e300;
+    for (size_t i = 0; i < predicted.size(); ++i)
+    {
+      const double measured = std::sqrt(squares[i] / Draws) / Sigma;
+      // 1800 squares: the measured spread is within about 2% (1 / sqrt(3600)).
+      EXPECT_NEAR(measured / predicted[i], 1.0, 0.08) << (closed ? "closed" : "open") << " vertex " << i;
+      sparsest = std::max(sparsest, predicted[i]);
+      densest = std::min(densest, predicted[i]);
+    }
+    // The sparse stretch's vertices move several times more than the dense one's.
+    EXPECT_GT(sparsest, 2.0 * densest);
+  }
+}
+
+TEST(Approximation, ReferencePolygonNoiseOnEvenPointsIsTheHatFunctionsOwn)
+{
+  // N points spread evenly over K knots: an inner vertex moves by
+  // sqrt(sqrt(3) K / N) per unit of noise (the inverse of the hat functions'
+  // Toeplitz Gram matrix [1/6 2/3 1/6] has diagonal sqrt(3)); the end
+  // vertices, resting on one span, by more.
+  const int count = 4000, knotCount = 101;
+  std::vector<double> u(count);
+  for (int j = 0; j < count; ++j)
+  {
+    u[j] = (j + 0.5) / count;
+  }
+  const std::vector<double> noise =
+    leastSquaresPolygonNoise(std::vector<Vec3>(count, Vec3::Zero()), u, uniformKnots(u, knotCount), false);
+  const double inner = std::sqrt(std::sqrt(3.0) * (knotCount - 1) / count);
+  EXPECT_NEAR(noise[knotCount / 2] / inner, 1.0, 0.01);
+  EXPECT_GT(noise.front(), 1.3 * inner);
+  EXPECT_GT(noise.back(), 1.3 * inner);
+}
