@@ -182,8 +182,7 @@ bool ShapeAuditor::twistReversesAt(int i) const
   // they reverse (a trefoil's torsion changes sign a third of a span in).
   if (!this->Data.Closed && (i == 1 || i == spans - 1))
   {
-    const int inner = i == 1 ? after : before;
-    return shape.Twisted[inner] && !shape.Twisted[i == 1 ? before : after];
+    return shape.Twisted[i == 1 ? after : before]; // the inner span
   }
   return shape.Twisted[before] && shape.Twisted[after] &&
     shape.Torsion[before] * shape.Torsion[after] < 0;
