@@ -483,7 +483,7 @@ std::vector<SpanParameter> VariableDegreeSpline::spanParameters() const
 
 double raisedDegree(double degree, double maxDegree)
 {
-  return std::max(degree, std::min(std::ceil(2.0 * degree), maxDegree));
+  return std::max(degree, std::min(std::ceil(std::cbrt(2.0) * degree), maxDegree));
 }
 
 namespace
