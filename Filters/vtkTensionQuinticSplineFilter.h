@@ -16,7 +16,7 @@
  * In Automatic mode (default) every knot starts at gamma = lambda = 1 and
  * the parameters of the two knots of every span that breaks the shape of the
  * data (Costantini & Manni (VDPS), Definition 1: collinearity, convexity, coplanarity,
- * torsion sign) are halved until no span breaks it or they reach 1/256,
+ * torsion sign) are lowered, by sqrt(2) a step, until no span breaks it or they reach 1/256,
  * within the bounds every automatic mode keeps (no cusp, no runaway
  * curvature; see vtkShapeSplineFilter); what is left is reported.
  * Otherwise Gamma and Lambda are used at every knot (C4 uses min(Gamma, 1)).

@@ -10,8 +10,12 @@ namespace shapesplines
 {
 namespace
 {
-/// The automatic mode's ladder of parameters: each level halves gamma (and
-/// lambda, C3) at the knots of the span, down to the floor.
+/// Levels per halving of gamma: halving at each level overshot what a span
+/// needed (1000 noisy helices: 201 violations left, 3.0x the fixed mode's
+/// time; in two steps 132, 2.6x; 200 random polylines 300 -> 276).
+constexpr double StepsPerHalving = 2.0;
+/// The automatic mode's ladder of parameters: each level divides gamma (and
+/// lambda, C3) at the knots of the span by sqrt(2), down to the floor.
 QuinticParameters loweredParameters(
   const QuinticFitOptions& quintic, const std::vector<int>& levels, bool closed)
 {
@@ -21,7 +25,7 @@ QuinticParameters loweredParameters(
     QuinticParameters::uniform(quintic.Continuity, knots, quintic.Gamma, quintic.Lambda);
   for (int i = 0; i < knots; ++i)
   {
-    const double factor = std::ldexp(1.0, -perKnot[i]);
+    const double factor = std::exp2(-perKnot[i] / StepsPerHalving);
     parameters.Gamma[i] = std::max(quintic.Floor, std::min(quintic.Gamma, 1.0) * factor);
     parameters.Lambda[i] = std::max(quintic.Floor, std::min(quintic.Lambda, 1.0) * factor);
     if (perKnot[i] == 0)
@@ -36,7 +40,7 @@ QuinticParameters loweredParameters(
 ShapeLadder quinticLadder(const QuinticFitOptions& quintic)
 {
   ShapeLadder ladder;
-  ladder.TopLevel = static_cast<int>(std::ceil(std::log2(1.0 / quintic.Floor)));
+  ladder.TopLevel = static_cast<int>(std::ceil(StepsPerHalving * std::log2(1.0 / quintic.Floor)));
   ladder.MaxRounds = quintic.MaxRounds;
   ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
   return ladder;

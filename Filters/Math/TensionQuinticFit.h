@@ -13,7 +13,7 @@ namespace shapesplines
 struct QuinticFitOptions
 {
   QuinticContinuity Continuity = QuinticContinuity::C4;
-  /// Lower the tension (halve gamma, and lambda for C3, per level) only on
+  /// Lower the tension (gamma, and lambda for C3, by sqrt(2) per level) only on
   /// spans that fail the shape audit, starting from Gamma and Lambda
   /// (preserveShapeAutomatically); otherwise Gamma and Lambda at every knot.
   bool Automatic = true;
