@@ -27,7 +27,7 @@
  * Mode APPROXIMATE (lines with at least six points, open or closed; shorter
  * ones are interpolated with a warning) fits the spline with NumberOfKnots
  * knots (0, the default: chosen per line by cross-validation), uniform in
- * the parameters (on open lines it smooths, weighted by the curvature of a
+ * the parameters (on lines it smooths, weighted by the curvature of a
  * first fit where that scores better), which CorrectParameters moves to where each point sits on
  * the curve, in least squares (Cravero, Manni & Sampoli, section 5); its shape reference is
  * L*, the least-squares polygon on the same knots, whose shape the automatic
@@ -94,7 +94,7 @@ public:
    * Knots of the approximation (1 counts as 2), or 0 (default): chosen per
    * line from the data by generalized cross-validation on parameters
    * corrected towards the curve, the fewest within half a standard error of
-   * the best score (CorrectParameters); open lines that this smooths are
+   * the best score (CorrectParameters); lines that this smooths are
    * planned again on parameters weighted by a first fit's curvature, and
    * the better-scoring plan kept. At most half the points and
    * points - 4 (lines of fewer than 6 points are interpolated).

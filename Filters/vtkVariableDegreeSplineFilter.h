@@ -19,7 +19,7 @@
  * every automatic mode (see vtkShapeSplineFilter). The APPROXIMATE modes
  * (lines with at least four points, six when closed; shorter ones are
  * interpolated with a warning) fit NumberOfKnots knots (0, the default:
- * chosen per line by cross-validation) uniform in the parameters (on open
+ * chosen per line by cross-validation) uniform in the parameters (on
  * lines it smooths, weighted by the curvature of a first fit where that
  * scores better), which CorrectParameters moves to where each point sits on the curve, in least
  * squares, and keep the shape of psi, the best piecewise linear

@@ -540,29 +540,30 @@ ScoredPlan planFrom(const std::vector<Vec3>& points, const std::vector<double>& 
 }
 
 /**
- * Open lines: the parameters u warped so that equal steps cover equal
- * amounts of arc length times sqrt(1 + curvature / mean curvature), both of
- * the classical quintic least squares on `knots` uniform knots; uniform
- * knots in the warped parameters are then denser where the curve bends.
- * The fit's first and last spans take the curvature at their inner knot:
- * an end hook of the fit would draw knots to itself and feed the hook.
- * Nothing where the fit fails or does not bend, or has fewer than 3 spans.
+ * The parameters u warped so that equal steps cover equal amounts of arc
+ * length times sqrt(1 + curvature / mean curvature), both of the classical
+ * quintic least squares on `knots` uniform knots (closed: distinct ones);
+ * uniform knots in the warped parameters are then denser where the curve
+ * bends. An open fit's first and last spans take the curvature at their
+ * inner knot: an end hook of the fit would draw knots to itself and feed
+ * the hook. Nothing where the fit fails or does not bend, or has fewer than
+ * 3 spans.
  */
 std::optional<std::vector<double>> curvatureWeighted(
-  const std::vector<Vec3>& points, const std::vector<double>& u, int knots)
+  const std::vector<Vec3>& points, const std::vector<double>& u, int knots, bool closed)
 {
   if (knots < 4)
   {
     return std::nullopt;
   }
-  const ExtendedData data = extendForApproximation(points, u, knots, false);
-  const auto fit = QuinticFit::solve(data.Points, data.Parameters, data.Knots, false);
+  const ExtendedData data = extendForApproximation(points, u, knots, closed);
+  const auto fit = QuinticFit::solve(data.Points, data.Parameters, data.Knots, closed);
   if (!fit)
   {
     return std::nullopt;
   }
   constexpr int PerSpan = 40;
-  const int samples = PerSpan * (knots - 1);
+  const int samples = PerSpan * (closed ? knots : knots - 1);
   const double a = u.front(), b = u.back();
   std::vector<double> speed(samples + 1), curvature(samples + 1);
   for (int k = 0; k <= samples; ++k)
@@ -571,7 +572,7 @@ std::optional<std::vector<double>> curvatureWeighted(
     speed[k] = d[1].norm();
     curvature[k] = speed[k] > 0.0 ? d[1].cross(d[2]).norm() / (speed[k] * speed[k] * speed[k]) : 0.0;
   }
-  for (int k = 0; k < PerSpan; ++k)
+  for (int k = 0; k < PerSpan && !closed; ++k)
   {
     curvature[k] = curvature[PerSpan];
     curvature[samples - k] = curvature[samples - PerSpan];
@@ -620,9 +621,8 @@ ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::
   };
   const ScoredPlan uniform = planFrom(points, u, highest, closed, requestedKnots, correctParameters, half(0.0));
   const bool smoothing = points.size() >= SmoothingSpanPoints * static_cast<size_t>(uniform.Plan.Knots);
-  const auto warped = closed || !smoothing
-    ? std::nullopt
-    : curvatureWeighted(points, uniform.Plan.Parameters, uniform.Plan.Knots);
+  const auto warped =
+    smoothing ? curvatureWeighted(points, uniform.Plan.Parameters, uniform.Plan.Knots, closed) : std::nullopt;
   if (!warped)
   {
     return uniform.Plan;
