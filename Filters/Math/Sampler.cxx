@@ -79,14 +79,14 @@ double sampledArcLength(
   const double middle = curve.evaluateOnSpan(span, a + half, 1)[1].norm();
   const double withMiddle =
     half * (19.0 / 35.0 * ends + 4.0 / 35.0 * slopes + bends / 105.0 + 32.0 / 35.0 * middle);
-  if (std::isfinite(withMiddle) && left.Value > 0 && right.Value > 0 &&
-    std::abs(withMiddle - hermite) <= 1e-7 * withMiddle)
+  // Neither rule is trusted where the curve stops at an end.
+  const bool moving = std::isfinite(withMiddle) && left.Value > 0 && right.Value > 0;
+  if (moving && std::abs(withMiddle - hermite) <= 1e-7 * withMiddle)
   {
     return withMiddle;
   }
   const double gauss = curve.arcLengthOnSpan(span, a, b);
-  if (std::isfinite(withMiddle) && left.Value > 0 && right.Value > 0 &&
-    std::abs(gauss - withMiddle) <= 1e-8 * gauss)
+  if (moving && std::abs(gauss - withMiddle) <= 1e-8 * gauss)
   {
     return gauss;
   }
