@@ -98,7 +98,13 @@ DiscreteShape discreteShape(
     const Vec3& c = unit[next];
     const double triple = a.dot(b.cross(c));
     const double crosses = a.cross(b).norm() * b.cross(c).norm();
-    const bool flat = std::abs(triple) <= tolerances.Data || !(crosses > 0);
+    // Close points on a twisting curve have a tiny triple product (third
+    // order in their spacing) while the planes at their ends turn by far
+    // more than the audit lets a curve's binormal turn (epsilon_2): such
+    // data are not coplanar at the audit's resolution.
+    const bool flat = (std::abs(triple) <= tolerances.Data &&
+                        std::abs(triple) <= tolerances.Curve * crosses) ||
+      !(crosses > 0);
     // What the vertices' noise can do to the triple product: each of the
     // three directions turns by about noise / length out of the others' plane.
     const double noiseTwist = b.cross(c).norm() * segmentNoise(before) / length[before] +

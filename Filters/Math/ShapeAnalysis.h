@@ -15,7 +15,8 @@ namespace shapesplines
 struct ShapeTolerances
 {
   /// epsilon_1: |B_i| and the normalised triple product below this count as zero
-  /// (collinear points, coplanar segments).
+  /// (collinear points, coplanar segments; the latter only where the planes
+  /// at the segment's ends also turn by at most epsilon_2).
   double Data = 1e-6;
   /// epsilon_2: allowed sine of the angle between the curve's tangent (binormal)
   /// and the data's segment (binormal); and how far a scale-free signed curvature
