@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -436,12 +437,21 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   shapesplines::ShapeTolerances tolerances;
   tolerances.Data = this->DataShapeTolerance;
   tolerances.Curve = this->CurveShapeTolerance;
+  // As the curve filters do: a turn within the rounding of float input is no shape.
+  const bool floats = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
+  const double precision =
+    floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
     const bool finite = ReadLinePoints(this, input, lines[l], points);
     const auto data = shapesplines::cleanPolyline(points, this->Closed);
-    const auto shape = shapesplines::discreteShape(data, tolerances);
+    double largest = 0.0;
+    for (const Vec3& p : data.Points)
+    {
+      largest = std::max(largest, p.cwiseAbs().maxCoeff());
+    }
+    const auto shape = shapesplines::discreteShape(data, tolerances, {}, precision * largest);
     if (finite)
     {
       discrete.Write(lines[l].PointIds, data, shape);

@@ -34,7 +34,8 @@ public:
     , Context(context)
     , Reference(reference)
     , Ladder(ladder)
-    , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise))
+    , Shape(discreteShape(
+        reference, context.Options.Tolerances, ladder.ReferenceNoise, context.CoordinateNoise))
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
         context.Options.AuditSubdivisions, context.CoordinateNoise,

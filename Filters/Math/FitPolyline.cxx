@@ -211,7 +211,7 @@ ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
   const std::vector<double>& referenceNoise) const
 {
   return auditCurve(curve, reference,
-    discreteShape(reference, this->Options.Tolerances, referenceNoise),
+    discreteShape(reference, this->Options.Tolerances, referenceNoise, this->CoordinateNoise),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
 }
@@ -455,7 +455,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.NoiseLevel = built.NoiseLevel * fit.Scale;
   fit.LooksNoisy = !fit.ShapeReference && looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
-  fit.Shape = discreteShape(reference, options.Tolerances, built.ReferenceNoise);
+  fit.Shape = discreteShape(reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise);
   fit.Audit = built.Audit ? *std::move(built.Audit)
                           : auditCurve(*fit.Spline, reference, fit.Shape, options.Tolerances,
                               options.AuditSubdivisions, fit.CoordinateNoise, options.Progress);

@@ -34,14 +34,13 @@ const char* shapeCriterionName(ShapeCriterion criterion)
   }
 }
 
-DiscreteShape discreteShape(
-  const CleanPolyline& data, const ShapeTolerances& tolerances, const std::vector<double>& vertexNoise)
+DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
+  const std::vector<double>& vertexNoise, double coordinateNoise)
 {
   const int n = static_cast<int>(data.Points.size());
   // How far segment i's direction turns with its vertices' noise, times its length.
-  auto segmentNoise = [&](int i) {
-    return vertexNoise.empty() ? 0.0 : vertexNoise[i] + vertexNoise[(i + 1) % n];
-  };
+  auto noise = [&](int i) { return std::max(vertexNoise.empty() ? 0.0 : vertexNoise[i], coordinateNoise); };
+  auto segmentNoise = [&](int i) { return noise(i) + noise((i + 1) % n); };
   const int spans = data.numberOfSpans();
   DiscreteShape shape;
   shape.Binormal.assign(n, Vec3::Zero());

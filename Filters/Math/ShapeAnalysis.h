@@ -50,10 +50,13 @@ struct DiscreteShape
  * vertices' noise over its length) or in the normalised triple product;
  * below (but above tolerances.Data), the point is neither convex nor
  * collinear, the segment neither twisted nor coplanar: no criterion applies
- * there.
+ * there. coordinateNoise, the rounding of the input coordinates in the
+ * data's units (FitContext::CoordinateNoise), is every vertex's least noise:
+ * float coordinates leave a segment of 1e-4 of the diagonal a direction
+ * known to about 0.1, and a turn or twist within that is no shape to keep.
  */
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
-  const std::vector<double>& vertexNoise = {});
+  const std::vector<double>& vertexNoise = {}, double coordinateNoise = 0.0);
 
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).

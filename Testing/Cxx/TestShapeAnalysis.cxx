@@ -130,6 +130,31 @@ TEST(DiscreteShape, CloseSamplesOfAHelixAreNotCoplanar)
   }
 }
 
+TEST(DiscreteShape, TurnsWithinTheCoordinatesRoundingAreNoShape)
+{
+  // A helix with one point doubled at 1e-6 of its size, off in a direction
+  // of its own: what float coordinates (7 digits) make of a repeated point.
+  std::vector<Vec3> points = helix(16, 2);
+  const int twin = 10;
+  points.insert(points.begin() + twin + 1, points[twin] + 1e-6 * Vec3(0.3, -0.5, 0.8));
+  const CleanPolyline line = cleanPolyline(points, false);
+  const double rounding = 1e-7; // float coordinates of this helix, relative to its size
+  const DiscreteShape exact = discreteShape(line);
+  const DiscreteShape rounded = discreteShape(line, {}, {}, rounding);
+  for (const int i : { twin, twin + 1 })
+  {
+    EXPECT_TRUE(exact.Convex[i]) << i;
+    EXPECT_FALSE(rounded.Convex[i]) << i;
+  }
+  EXPECT_TRUE(exact.Twisted[twin]);
+  EXPECT_FALSE(rounded.Twisted[twin]);
+  for (const int i : { 3, 20 })
+  {
+    EXPECT_TRUE(rounded.Convex[i]) << i;
+    EXPECT_TRUE(rounded.Twisted[i]) << i;
+  }
+}
+
 TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
 {
   std::vector<Vec3> points = helix(8, 2);
