@@ -256,7 +256,8 @@ private:
       before[j] = this->figures(j);
     }
     this->rebuild(moved);
-    if (this->undoBeyondBounds(raise, previous, moved, before))
+    // An undone raise moves the curve too (a global solve): check again.
+    while (this->undoBeyondBounds(raise, previous, moved, before))
     {
       this->rebuild(moved);
     }
@@ -289,6 +290,7 @@ private:
         beyond[j] = anyBeyond = true;
       }
     }
+    bool undone = false;
     for (const int j : anyBeyond ? this->around(beyond, this->Ladder.Reach) : std::vector<int>{})
     {
       if (raise[j])
@@ -297,9 +299,10 @@ private:
         this->Frozen[j] = this->Step[j] == 1;
         this->Step[j] = 1;
         this->RaisedBefore[j] = raise[j] = 0;
+        undone = true;
       }
     }
-    return anyBeyond;
+    return undone;
   }
 
   /// Freezes a level that has three times in a row not brought its spans

@@ -91,7 +91,8 @@ struct AutomaticShape
  * keeps failing, rebuilds, and audits again only the spans within Reach of a
  * change. A raise that pushes a span beyond the bounds (and beyond where it
  * was) is undone, tried again as a single step, and then that span's level
- * frozen; a span whose level three times in a row does not bring it closer
+ * frozen (the curve after the undo is checked again: a global solve moves
+ * with every level); a span whose level three times in a row does not bring it closer
  * to passing (fewer failures, or a tenth less ShapeAudit::SpanDeficiency) is
  * frozen too. Stops when nothing fails or nothing can rise; a last
  * audit of the whole curve catches the far effects of a global solve (then it

@@ -136,6 +136,32 @@ inline std::vector<Vec3> noisyHelixPoints(int count, double perTurn, double nois
   return withNoise(points, noise, seed);
 }
 
+/// count sorted random values in [from, to]: points at random places along a curve.
+inline std::vector<double> randomParameters(int count, double from, double to, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> parameter(from, to);
+  std::vector<double> t(count);
+  for (double& value : t)
+  {
+    value = parameter(random);
+  }
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+/// count points at random places along two turns of the helix a = 1, b = 0.25
+/// (close pairs among them), with noise of the radius' fraction `noise`.
+inline std::vector<Vec3> unevenNoisyHelixPoints(int count, double noise, unsigned seed)
+{
+  std::vector<Vec3> points;
+  for (const double t : randomParameters(count, 0.0, 4.0 * Pi, seed))
+  {
+    points.emplace_back(std::cos(t), std::sin(t), 0.25 * t);
+  }
+  return withNoise(points, noise, seed + 1000);
+}
+
 /// count points of one period of the trefoil knot (an open line: the period
 /// is not closed), with noise of a fraction of its size 3.
 inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned seed)

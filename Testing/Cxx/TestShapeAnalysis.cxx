@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <functional>
 
@@ -78,19 +77,11 @@ namespace
 /// (tilted out of the axes), or of the circle b = 0: close pairs among them.
 std::vector<Vec3> randomlySpacedHelix(int count, double b, unsigned seed)
 {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> parameter(0.0, 4.0 * Pi);
-  std::vector<double> t(count);
-  for (double& value : t)
-  {
-    value = parameter(random);
-  }
-  std::sort(t.begin(), t.end());
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).matrix();
   std::vector<Vec3> points;
-  for (const double value : t)
+  for (const double t : randomParameters(count, 0.0, 4.0 * Pi, seed))
   {
-    points.push_back(tilt * Vec3(std::cos(value), std::sin(value), b * value));
+    points.push_back(tilt * Vec3(std::cos(t), std::sin(t), b * t));
   }
   return points;
 }
