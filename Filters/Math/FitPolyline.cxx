@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <utility>
 
 namespace shapesplines
 {
@@ -39,6 +40,62 @@ private:
   double Noise;
   double Floor = 0.0;
 };
+
+/**
+ * The curvature and speed |s'| at the bottom of span j's deepest speed dip,
+ * {0, infinity} without one: an interior sample slower than its neighbours
+ * and than half the span's fastest, refined by golden section between its
+ * neighbours. A near-cusp's curvature spike can fall between samples, the
+ * dip in speed around it is wider.
+ */
+std::pair<double, double> speedDip(
+  const Curve& curve, int j, const std::vector<Derivatives>& values, double start, double h)
+{
+  const int last = static_cast<int>(values.size()) - 1;
+  int slowest = -1;
+  double fastest = 0.0;
+  for (int k = 0; k <= last; ++k)
+  {
+    const double speed = values[k][1].norm();
+    fastest = std::max(fastest, speed);
+    const bool dip = k > 0 && k < last && speed < values[k - 1][1].norm() && speed <= values[k + 1][1].norm();
+    if (dip && (slowest < 0 || speed < values[slowest][1].norm()))
+    {
+      slowest = k;
+    }
+  }
+  if (slowest < 0 || values[slowest][1].norm() >= 0.5 * fastest)
+  {
+    return { 0.0, std::numeric_limits<double>::infinity() };
+  }
+  auto speedAt = [&](double x) { return curve.evaluateOnSpan(j, x, 1)[1].norm(); };
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double lo = start + h * (slowest - 1) / last, hi = start + h * (slowest + 1) / last;
+  double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+  double f1 = speedAt(x1), f2 = speedAt(x2);
+  constexpr int Steps = 16; // the bracket shrinks to 5e-4 of its width
+  for (int step = 0; step < Steps; ++step)
+  {
+    if (f1 < f2)
+    {
+      hi = x2;
+      x2 = x1;
+      f2 = f1;
+      x1 = hi - ratio * (hi - lo);
+      f1 = speedAt(x1);
+    }
+    else
+    {
+      lo = x1;
+      x1 = x2;
+      f1 = f2;
+      x2 = lo + ratio * (hi - lo);
+      f2 = speedAt(x2);
+    }
+  }
+  const Derivatives bottom = curve.evaluateOnSpan(j, 0.5 * (lo + hi), 2);
+  return { curvature(bottom), bottom[1].norm() };
+}
 
 /**
  * A curvature or torsion back in data units. At a hairpin of a line only
@@ -160,8 +217,9 @@ void CurveAuditor::audit(const Curve& curve, int j)
     speed = std::min(speed, values[k][1].norm());
     deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
-  this->Curvature[j] = curvature;
-  this->Speed[j] = chordSpeed > 0.0 ? speed / chordSpeed : 1.0;
+  const auto [dipCurvature, dipSpeed] = speedDip(curve, j, values, knots[j], h);
+  this->Curvature[j] = std::max(curvature, dipCurvature);
+  this->Speed[j] = chordSpeed > 0.0 ? std::min(speed, dipSpeed) / chordSpeed : 1.0;
   this->Deviation[j] = deviation / this->LocalLength[j];
 }
 

@@ -189,9 +189,10 @@ public:
   /// The audit, straying spans (beyond MaximumPolygonDeviation) included.
   ShapeAudit result() const;
 
-  /// Largest curvature on span j's samples (the curve's units).
+  /// Largest curvature on span j's samples (the curve's units), and at the
+  /// bottom of a dip in its speed, where a near-cusp's spike can hide between them.
   double largestCurvature(int span) const { return this->Curvature[span]; }
-  /// Lowest |s'| on span j's samples over its chord speed |s(t_j+1) - s(t_j)| / h_j.
+  /// Lowest |s'| on span j's samples (and dip) over its chord speed |s(t_j+1) - s(t_j)| / h_j.
   double lowestSpeed(int span) const { return this->Speed[span]; }
   /// Largest distance of span j's samples from the reference's segment j,
   /// over the longest of that segment and its neighbours.

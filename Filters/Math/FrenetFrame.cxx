@@ -39,6 +39,13 @@ Vec3 transport(const Vec3& normal, const Vec3& tangent)
 }
 } // namespace
 
+double curvature(const Derivatives& d)
+{
+  const double speed = robustNorm(d[1]);
+  const double value = speed > 0 ? robustNorm(d[1].cross(d[2])) / (speed * speed * speed) : 0.0;
+  return std::isfinite(value) ? value : 0.0;
+}
+
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature)
 {
   return frenetFrames(samples, std::vector<double>(samples.size(), flatCurvature));
