@@ -22,16 +22,8 @@ namespace
 template <class Curve>
 std::vector<Vec3> randomlySampled(const Curve& curve, double a, double b, int count, double noise, unsigned seed)
 {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> at(a, b);
-  std::vector<double> t(count);
-  for (double& value : t)
-  {
-    value = at(random);
-  }
-  std::sort(t.begin(), t.end());
   std::vector<Vec3> points;
-  for (const double value : t)
+  for (const double value : randomParameters(count, a, b, seed))
   {
     points.push_back(curve(value));
   }
