@@ -570,7 +570,7 @@ std::optional<std::vector<double>> curvatureWeighted(
   {
     const auto d = fit->evaluate(a + (b - a) * k / samples);
     speed[k] = d[1].norm();
-    curvature[k] = speed[k] > 0.0 ? d[1].cross(d[2]).norm() / (speed[k] * speed[k] * speed[k]) : 0.0;
+    curvature[k] = shapesplines::curvature(d[1], d[2]);
   }
   for (int k = 0; k < PerSpan && !closed; ++k)
   {

@@ -94,7 +94,7 @@ std::pair<double, double> speedDip(
     }
   }
   const Derivatives bottom = curve.evaluateOnSpan(j, 0.5 * (lo + hi), 2);
-  return { curvature(bottom), bottom[1].norm() };
+  return { curvature(bottom[1], bottom[2]), bottom[1].norm() };
 }
 
 /**

@@ -39,10 +39,10 @@ Vec3 transport(const Vec3& normal, const Vec3& tangent)
 }
 } // namespace
 
-double curvature(const Derivatives& d)
+double curvature(const Vec3& first, const Vec3& second)
 {
-  const double speed = robustNorm(d[1]);
-  const double value = speed > 0 ? robustNorm(d[1].cross(d[2])) / (speed * speed * speed) : 0.0;
+  const double speed = robustNorm(first);
+  const double value = speed > 0 ? robustNorm(first.cross(second)) / (speed * speed * speed) : 0.0;
   return std::isfinite(value) ? value : 0.0;
 }
 

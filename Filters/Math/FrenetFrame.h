@@ -51,8 +51,8 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
 /// The same with one threshold for every sample.
 std::vector<FrenetFrame> frenetFrames(const std::vector<Derivatives>& samples, double flatCurvature);
 
-/// |s' x s''| / |s'|^3 from derivatives 1 and 2; 0 where s' = 0 or the value is not finite.
-double curvature(const Derivatives& d);
+/// |s' x s''| / |s'|^3; 0 where s' = 0 or the value is not finite.
+double curvature(const Vec3& first, const Vec3& second);
 } // namespace shapesplines
 
 #endif
