@@ -49,22 +49,19 @@ private:
  * dip in speed around it is wider.
  */
 std::pair<double, double> speedDip(
-  const Curve& curve, int j, const std::vector<Derivatives>& values, double start, double h)
+  const Curve& curve, int j, const std::vector<double>& speeds, double start, double h)
 {
-  const int last = static_cast<int>(values.size()) - 1;
+  const int last = static_cast<int>(speeds.size()) - 1;
   int slowest = -1;
-  double fastest = 0.0;
-  for (int k = 0; k <= last; ++k)
+  for (int k = 1; k < last; ++k)
   {
-    const double speed = values[k][1].norm();
-    fastest = std::max(fastest, speed);
-    const bool dip = k > 0 && k < last && speed < values[k - 1][1].norm() && speed <= values[k + 1][1].norm();
-    if (dip && (slowest < 0 || speed < values[slowest][1].norm()))
+    const bool dip = speeds[k] < speeds[k - 1] && speeds[k] <= speeds[k + 1];
+    if (dip && (slowest < 0 || speeds[k] < speeds[slowest]))
     {
       slowest = k;
     }
   }
-  if (slowest < 0 || values[slowest][1].norm() >= 0.5 * fastest)
+  if (slowest < 0 || speeds[slowest] >= 0.5 * *std::max_element(speeds.begin(), speeds.end()))
   {
     return { 0.0, std::numeric_limits<double>::infinity() };
   }
@@ -161,8 +158,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
   const auto& knots = curve.knots();
   const int subdivisions = this->Subdivisions;
   std::vector<Derivatives>& values = this->Values;
+  std::vector<double>& speeds = this->Speeds;
   std::vector<double>& thresholds = this->Thresholds;
   values.resize(subdivisions + 1);
+  speeds.resize(subdivisions + 1);
   thresholds.resize(subdivisions + 1);
   const double h = knots[j + 1] - knots[j];
   // Both ends of the span, so that its frames see both knots.
@@ -173,6 +172,7 @@ void CurveAuditor::audit(const Curve& curve, int j)
   // In a loop of their own, the samples' square roots and divisions overlap.
   for (int k = 0; k <= subdivisions; ++k)
   {
+    speeds[k] = values[k][1].norm();
     thresholds[k] = flat(j, values[k][1]);
   }
   // A flat sample's normal only continues the frames (parallel transport):
@@ -214,10 +214,10 @@ void CurveAuditor::audit(const Curve& curve, int j)
     {
       (*sampleCurvatures)[k] = frames[k].Curvature;
     }
-    speed = std::min(speed, values[k][1].norm());
+    speed = std::min(speed, speeds[k]);
     deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
-  const auto [dipCurvature, dipSpeed] = speedDip(curve, j, values, knots[j], h);
+  const auto [dipCurvature, dipSpeed] = speedDip(curve, j, speeds, knots[j], h);
   this->Curvature[j] = std::max(curvature, dipCurvature);
   this->Speed[j] = chordSpeed > 0.0 ? std::min(speed, dipSpeed) / chordSpeed : 1.0;
   this->Deviation[j] = deviation / this->LocalLength[j];

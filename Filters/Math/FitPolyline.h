@@ -213,6 +213,7 @@ private:
   std::vector<std::vector<double>> SampleCurvatures; ///< per span, when kept
   // One span's samples, thresholds and frames, reused from span to span.
   std::vector<Derivatives> Values;
+  std::vector<double> Speeds;
   std::vector<double> Thresholds;
   std::vector<FrenetFrame> Frames;
 };
