@@ -7,12 +7,14 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformationVector.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace shapesplines
@@ -114,5 +116,10 @@ std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples)
     }
   }
   return removed;
+}
+double coordinatePrecision(vtkPolyData* polyData)
+{
+  const bool floats = polyData->GetPoints() && polyData->GetPoints()->GetDataType() == VTK_FLOAT;
+  return floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
 }
 } // namespace shapesplines

@@ -52,6 +52,11 @@ std::vector<LineCell> connectedPoints(vtkIdType numberOfPoints, vtkDataArray* li
 /// without `tuples` tuples: a damaged file's, which no filter may read tuple by
 /// tuple. Returns them for a warning, "X (23 tuples), Y (0 tuples)", or "".
 std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples);
+
+/// Relative precision of polyData's point coordinates: FLT_EPSILON for float
+/// points (rounded to 6e-8 relative: curvature or a turn within that is
+/// noise), DBL_EPSILON otherwise.
+double coordinatePrecision(vtkPolyData* polyData);
 } // namespace shapesplines
 
 #endif

@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -438,15 +437,13 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   tolerances.Data = this->DataShapeTolerance;
   tolerances.Curve = this->CurveShapeTolerance;
   // As the curve filters do: a turn within the rounding of float input is no shape.
-  const bool floats = input->GetPoints() && input->GetPoints()->GetDataType() == VTK_FLOAT;
-  const double precision =
-    floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
+  const double precision = shapesplines::coordinatePrecision(input);
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
     const bool finite = ReadLinePoints(this, input, lines[l], points);
     const auto data = shapesplines::cleanPolyline(points, this->Closed);
-    double largest = 0.0;
+    double largest = 0.0; // boundingBox() needs a point; a cell may have none
     for (const Vec3& p : data.Points)
     {
       largest = std::max(largest, p.cwiseAbs().maxCoeff());

@@ -31,7 +31,6 @@
 #include <exception>
 #include <future>
 #include <initializer_list>
-#include <limits>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -1176,10 +1175,7 @@ shapesplines::FitOptions vtkShapeSplineFilter::BuildFitOptions(vtkPolyData* inpu
   options.Sampling.TargetLength = this->SampleLength;
   options.Tolerances.Data = this->DataShapeTolerance;
   options.Tolerances.Curve = this->CurveShapeTolerance;
-  // Float input is rounded to 6e-8 relative: curvature within that is noise.
-  options.CoordinatePrecision = input->GetPoints()->GetDataType() == VTK_FLOAT
-    ? std::numeric_limits<float>::epsilon()
-    : std::numeric_limits<double>::epsilon();
+  options.CoordinatePrecision = shapesplines::coordinatePrecision(input);
   return options;
 }
 
