@@ -62,6 +62,12 @@ struct ShapeLadder
   /// lose their last violations that way; the quintic and qqr gained few or
   /// none for 1.3-2x the cost.
   bool RetrySpanBySpan = false;
+  /// Where the search leaves violations, search again from the common level
+  /// of every span with the fewest violations within the bounds, and keep
+  /// the better curve: on very uneven knots (the aorta's) a span raised
+  /// alone meets the bounds long before the level that mends it. For
+  /// interpolations (it ignores CurvatureChange).
+  bool RetryFromCommonLevel = false;
   /// Criteria (criterionBit) the parameter does not mend: a span
   /// failing only these is not raised (qqr: an exponent pulls a span towards
   /// its chord, which does not turn its torsion's sign).

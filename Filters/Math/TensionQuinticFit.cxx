@@ -50,6 +50,7 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
 {
   const CleanPolyline& data = context.Data;
   ShapeLadder ladder = quinticLadder(quintic);
+  ladder.RetryFromCommonLevel = true;
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
     return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(
       data.Points, context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed));

@@ -14,6 +14,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <string>
 
 using namespace shapesplines;
 using namespace shapesplines::test;
@@ -346,7 +348,11 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
     std::printf("%s, 180 unevenly spaced noisy helices: %d violations fixed, %d automatic, largest "
                 "curvature over the data's %.3g\n",
       family.Name, fixedTotal, automaticTotal, largest);
-    EXPECT_LT(automaticTotal, fixedTotal) << family.Name;
+    // What each family leaves at most (measured 0.2%, 0.3%, 3.6%, 73%; the
+    // quintic left 18% before its search from a common level).
+    const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.01 },
+      { "variable degree", 0.01 }, { "tension quintic", 0.06 }, { "qqr", 0.8 } };
+    EXPECT_LT(automaticTotal, leftAtMost.at(family.Name) * fixedTotal) << family.Name;
   }
 }
 
