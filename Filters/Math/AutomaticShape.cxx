@@ -1,6 +1,7 @@
 #include "AutomaticShape.h"
 
 #include "ExtendedIndex.h"
+#include "SparseSolve.h"
 
 #include <algorithm>
 #include <cmath>
@@ -521,17 +522,31 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
          : std::min(ladder.TopLevel, std::max(level + 1, (3 * level + 1) / 2)))
   {
     auto search = std::make_unique<ShapeSearch>(context, reference, ladder, true);
-    if (search->startAt(level) && search->violations() < violations)
+    try
     {
-      violations = search->violations();
-      best = std::move(search);
+      if (search->startAt(level) && search->violations() < violations)
+      {
+        violations = search->violations();
+        best = std::move(search);
+      }
+    }
+    catch (const SingularSystem&)
+    {
+      // A level the first search never reached: not a start.
     }
   }
   if (!best)
   {
     return std::nullopt;
   }
-  return best->search();
+  try
+  {
+    return best->search();
+  }
+  catch (const SingularSystem&)
+  {
+    return std::nullopt;
+  }
 }
 } // namespace
 

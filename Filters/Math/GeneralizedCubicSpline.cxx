@@ -416,6 +416,7 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
     ShapeLadder ladder;
     ladder.TopLevel = stepsToCap(*std::min_element(tension.begin(), tension.end()), raise);
     ladder.MaxRounds = options.MaxRounds;
+    ladder.RetryFromCommonLevel = true;
     ladder.Build = [&](const std::vector<int>& levels) {
       std::vector<SpaceKernel> kernels;
       kernels.reserve(spans);

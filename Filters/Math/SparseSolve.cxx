@@ -271,8 +271,7 @@ double conditionOf(const Factorisation& lu, int n, const Triplets& entries)
 [[noreturn]] void singularSystem()
 {
   // Eigen's own words ("structurally singular, zero column") say nothing to a user.
-  throw std::runtime_error("the spline's linear system is singular (too many knots for the "
-                           "points, or points too unevenly spaced)");
+  throw SingularSystem();
 }
 } // namespace
 

@@ -5,16 +5,28 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <stdexcept>
 #include <vector>
 
 namespace shapesplines
 {
+/// Thrown when a spline's linear system is singular: its message is for the user.
+class SingularSystem : public std::runtime_error
+{
+public:
+  SingularSystem()
+    : std::runtime_error("the spline's linear system is singular (too many knots for the "
+                         "points, or points too unevenly spaced)")
+  {
+  }
+};
+
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
 /**
  * Solves A X = B for a square sparse A given as triplets (duplicates add up)
  * and three right-hand sides, one per coordinate. Banded and cyclic-banded
- * systems cost O(n). Throws std::runtime_error if A is singular. With
+ * systems cost O(n). Throws SingularSystem if A is singular. With
  * conditionEstimate, also estimates the 1-norm condition number of A with
  * its rows scaled to a largest entry of 1 (Hager-Higham: a few more solves
  * with A and its transpose, still O(n)).
