@@ -506,18 +506,19 @@ namespace
 {
 /**
  * The search again from a common level: every span at levels 1, 2, 3, 5,
- * 8, ... up to the top (level 0 around spans this pushes beyond the bounds),
- * the start with the fewest violations kept (none better than the first
- * search's: no search), and the search from there. Lowering a tension a
- * little can push a span beyond the bounds where lowering it much is fine
- * (the aorta's quintic: 1.9e4 times the data's curvature at gamma 0.5, 560
- * at 0.05), which a search that stops at the bounds never reaches.
+ * 8, ... up to the top (level 0 around spans this pushes beyond the bounds)
+ * until one keeps the shape, the start with the fewest violations kept
+ * (none better than the first search's: no search), and the search from
+ * there. Lowering a tension a little can push a span beyond the bounds where
+ * lowering it much is fine (the aorta's quintic: 1.9e4 times the data's
+ * curvature at gamma 0.5, 560 at 0.05), which a search that stops at the
+ * bounds never reaches.
  */
 std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
   const CleanPolyline& reference, const ShapeLadder& ladder, int violations)
 {
   std::unique_ptr<ShapeSearch> best;
-  for (int level = 1; level <= ladder.TopLevel; level = level == ladder.TopLevel
+  for (int level = 1; level <= ladder.TopLevel && violations > 0; level = level == ladder.TopLevel
          ? level + 1
          : std::min(ladder.TopLevel, std::max(level + 1, (3 * level + 1) / 2)))
   {
