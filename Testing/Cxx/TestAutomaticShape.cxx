@@ -30,19 +30,22 @@ namespace
  * violations the higher the level on planar data). With TwistedSpan, that
  * span of the cubic carries a twist along z, h tau^4 (1 - tau)^4 * 16, which
  * vanishes at its knots to the third derivative: the span's torsion changes
- * sign, its knots' does not; the blend with the chord takes it away.
+ * sign, its knots' does not; the blend with the chord takes it away. With
+ * Detour, a span at level 1 bulges Detour * h off its chord instead of half
+ * blending (beyond the automatic mode's deviation bound when large).
  */
 class ToyCurve final : public Curve
 {
 public:
   ToyCurve(const CleanPolyline& data, const std::vector<double>& knots, std::vector<int> levels,
-    double wiggle, int twistedSpan)
+    double wiggle, int twistedSpan, double detour = 0.0)
     : Curve(knots, data.Closed)
     , Cubic(CubicSpline::interpolate(data.Points, knots, data.Closed))
     , Points(data.Points)
     , Levels(std::move(levels))
     , Wiggle(wiggle)
     , TwistedSpan(twistedSpan)
+    , Detour(detour)
   {
   }
 
@@ -81,6 +84,16 @@ public:
       }
       return d;
     }
+    if (this->Detour > 0.0 && this->Levels[span] == 1)
+    {
+      const double a = this->Detour * h;
+      const double w = Pi / h;
+      for (int m = 0; m <= order; ++m)
+      {
+        d[m].z() += a * std::pow(w, m) * std::sin(Pi * tau + 0.5 * Pi * m); // d^m/dt^m sin
+      }
+      return d;
+    }
     const double w = std::min(1.0, 0.5 * this->Levels[span]);
     const Vec3& a = this->Points[span];
     const Vec3& b = this->Points[(span + 1) % this->Points.size()];
@@ -107,6 +120,7 @@ private:
   std::vector<int> Levels;
   double Wiggle;
   int TwistedSpan;
+  double Detour;
 };
 
 struct ToyRun
@@ -209,6 +223,44 @@ TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
   EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), run.Levels.front()),
     static_cast<long>(run.Levels.size()));
   EXPECT_GT(run.Levels.front(), 0);
+}
+
+TEST(AutomaticShape, SearchesFromACommonLevelWhereOneStepUpBreaksTheBounds)
+{
+  // One level up takes a span five chords off its chord (beyond the
+  // deviation bound: undone, frozen), two levels straighten it. Span by
+  // span the search keeps the cubic; from the common level 2 nothing fails.
+  const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  ASSERT_GT(cubic.Audit.violations(), 0);
+  for (const bool retry : { false, true })
+  {
+    std::vector<int> levels;
+    const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, [&](const FitContext& context) {
+      ShapeLadder ladder;
+      ladder.TopLevel = 2;
+      ladder.RetryFromCommonLevel = retry;
+      ladder.Build = [&](const std::vector<int>& at) -> std::unique_ptr<Curve> {
+        return std::make_unique<ToyCurve>(context.Data, context.Knots, at, 0.0, -1, 5.0);
+      };
+      AutomaticShape found = preserveShapeAutomatically(context, context.Data, ladder);
+      levels = found.Levels;
+      BuiltCurve built;
+      built.Spline = std::move(found.Spline);
+      built.Audit = std::move(found.Audit);
+      return built;
+    });
+    const long spans = static_cast<long>(levels.size());
+    if (retry)
+    {
+      EXPECT_TRUE(fit.Audit.preserving());
+      EXPECT_EQ(std::count(levels.begin(), levels.end(), 2), spans);
+    }
+    else
+    {
+      EXPECT_EQ(fit.Audit.violations(), cubic.Audit.violations());
+      EXPECT_EQ(std::count(levels.begin(), levels.end(), 0), spans);
+    }
+  }
 }
 
 TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
