@@ -910,8 +910,10 @@ void ReportCurvatureSpikes(
                                       << line.LargestCurvature << ", "
                                       << line.LargestCurvature * diagonal
                                       << " over its bounding box diagonal: a cusp or a kink, not "
-                                      << "the data's shape. Mode Approximate, another family or "
-                                      << "the automatic shape mode avoid it.");
+                                      << "the data's shape (an automatic mode may keep one within "
+                                      << "its bound, 1e3 times the data's largest discrete "
+                                      << "curvature). Mode Approximate, or the Generalized Cubic "
+                                      << "Spline's automatic mode, avoid it.");
     }
   }
 }
