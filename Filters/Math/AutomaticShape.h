@@ -103,8 +103,9 @@ struct AutomaticShape
  * frozen too. Stops when nothing fails or nothing can rise; a last
  * audit of the whole curve catches the far effects of a global solve (then it
  * goes on). Returns the best curve met: the fewest violations, among those
- * within the bounds (of a second search, ShapeLadder::RetrySpanBySpan, if
- * it has fewer). Progress is reported each round (it can abort).
+ * within the bounds (of a second search, ShapeLadder::RetrySpanBySpan, or
+ * a third, ShapeLadder::RetryFromCommonLevel, if it has fewer). Progress is
+ * reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);
