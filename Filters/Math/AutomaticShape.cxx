@@ -506,9 +506,9 @@ BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
 namespace
 {
 /**
- * The search again from a common level: every span at levels 1, 2, 3, 5,
- * 8, ... up to the top (level 0 around spans this pushes beyond the bounds)
- * until one keeps the shape, the start with the fewest violations kept
+ * The search again from a common level: every span at levels 3, 5, 8, 12,
+ * ... up to the top (one or two up, the first search has tried; level 0
+ * around spans this pushes beyond the bounds) until one keeps the shape, the start with the fewest violations kept
  * (none better than the first search's: no search), and the search from
  * there. A level a little up can push a span beyond the bounds where one
  * far up is fine (the aorta's quintic: 1.9e4 times the data's curvature at
@@ -519,7 +519,7 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
   const CleanPolyline& reference, const ShapeLadder& ladder, int violations)
 {
   std::unique_ptr<ShapeSearch> best;
-  for (int level = 1; level <= ladder.TopLevel && violations > 0; level = level == ladder.TopLevel
+  for (int level = std::min(3, ladder.TopLevel); level <= ladder.TopLevel && violations > 0; level = level == ladder.TopLevel
          ? level + 1
          : std::min(ladder.TopLevel, std::max(level + 1, (3 * level + 1) / 2)))
   {
