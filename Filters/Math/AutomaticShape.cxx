@@ -67,9 +67,7 @@ public:
   /// Builds level 0 and audits it whole.
   void start()
   {
-    this->Curve = this->Ladder.Build(this->Levels);
-    this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
-    this->Audit = this->Auditor.result();
+    this->buildWhole();
     for (int j = 0; j < this->Spans && this->Ladder.Bounds.CurvatureChange > 0.0; ++j)
     {
       this->StartCurvatures.push_back(this->Auditor.sampleCurvatures(j));
@@ -89,9 +87,7 @@ public:
     constexpr int MostResets = 8;
     for (int reset = 0; reset <= MostResets; ++reset)
     {
-      this->Curve = this->Ladder.Build(this->Levels);
-      this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
-      this->Audit = this->Auditor.result();
+      this->buildWhole();
       bool lowered = false;
       for (const int j : this->around(this->beyondBounds(), this->Ladder.Reach))
       {
@@ -215,16 +211,27 @@ private:
     return spans;
   }
 
-  /// The spans beyond the bounds (CurvatureChange aside).
-  std::vector<char> beyondBounds() const
+  /// Whether a span's figures cross a bound, and are worse there than `than`.
+  bool beyond(const Figures& now, const Figures& than) const
   {
     const ShapeBounds& bounds = this->Ladder.Bounds;
+    return (now.Curvature > this->CurvatureBound && now.Curvature > than.Curvature) ||
+      (now.Speed < bounds.SpeedFraction && now.Speed < than.Speed) ||
+      (now.Deviation > bounds.Deviation && now.Deviation > than.Deviation) ||
+      (bounds.CurvatureChange > 0.0 && now.Change > bounds.CurvatureChange &&
+        now.Change > than.Change);
+  }
+
+  /// The spans beyond the bounds, whatever they were before (CurvatureChange
+  /// aside: it is measured from level 0's curve, which a common start is not).
+  std::vector<char> beyondBounds() const
+  {
+    constexpr double Infinity = std::numeric_limits<double>::infinity();
+    const Figures unbeatable{ 0.0, Infinity, 0.0, Infinity };
     std::vector<char> beyond(this->Spans, 0);
     for (int j = 0; j < this->Spans; ++j)
     {
-      const Figures now = this->figures(j);
-      beyond[j] = now.Curvature > this->CurvatureBound || now.Speed < bounds.SpeedFraction ||
-        now.Deviation > bounds.Deviation;
+      beyond[j] = this->beyond(this->figures(j), unbeatable);
     }
     return beyond;
   }
@@ -279,14 +286,27 @@ private:
 
   void auditWhole()
   {
-    this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
-    this->Audit = this->Auditor.result();
+    this->auditCurve();
     this->AuditedWhole = true;
     ++this->WholeAudits;
     if (this->Best == this->Levels)
     {
       this->BestViolations = this->Audit.violations();
     }
+  }
+
+  /// The current curve's audit, every span.
+  void auditCurve()
+  {
+    this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
+    this->Audit = this->Auditor.result();
+  }
+
+  /// The curve of the current levels, audited whole.
+  void buildWhole()
+  {
+    this->Curve = this->Ladder.Build(this->Levels);
+    this->auditCurve();
   }
 
   void rebuild(const std::vector<int>& moved)
@@ -335,17 +355,11 @@ private:
   bool undoBeyondBounds(std::vector<char>& raise, const std::vector<int>& previous,
     const std::vector<int>& moved, const std::vector<Figures>& before)
   {
-    const ShapeBounds& bounds = this->Ladder.Bounds;
     std::vector<char> beyond(this->Spans, 0);
     bool anyBeyond = false;
     for (const int j : moved)
     {
-      const Figures now = this->figures(j);
-      if ((now.Curvature > this->CurvatureBound && now.Curvature > before[j].Curvature) ||
-        (now.Speed < bounds.SpeedFraction && now.Speed < before[j].Speed) ||
-        (now.Deviation > bounds.Deviation && now.Deviation > before[j].Deviation) ||
-        (bounds.CurvatureChange > 0.0 && now.Change > bounds.CurvatureChange &&
-          now.Change > before[j].Change))
+      if (this->beyond(this->figures(j), before[j]))
       {
         beyond[j] = anyBeyond = true;
       }
@@ -405,13 +419,11 @@ private:
     if (this->Best != this->Levels)
     {
       this->Levels = this->Best;
-      this->Curve = this->Ladder.Build(this->Levels);
-      this->AuditedWhole = false;
+      this->buildWhole();
     }
-    if (!this->AuditedWhole)
+    else if (!this->AuditedWhole)
     {
-      this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
-      this->Audit = this->Auditor.result();
+      this->auditCurve();
     }
     result.Spline = std::move(this->Curve);
     result.Audit = std::move(this->Audit);
@@ -505,6 +517,21 @@ BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
 
 namespace
 {
+/// Levels 3, 5, 8, 12, ... (about x1.5 a step) below top, then top.
+std::vector<int> commonLevels(int top)
+{
+  std::vector<int> levels;
+  for (int level = std::min(3, top); level < top; level = std::max(level + 1, (3 * level + 1) / 2))
+  {
+    levels.push_back(level);
+  }
+  if (top > 0)
+  {
+    levels.push_back(top);
+  }
+  return levels;
+}
+
 /**
  * The search again from a common level: every span at levels 3, 5, 8, 12,
  * ... up to the top (one or two up, the first search has tried; level 0
@@ -519,10 +546,12 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
   const CleanPolyline& reference, const ShapeLadder& ladder, int violations)
 {
   std::unique_ptr<ShapeSearch> best;
-  for (int level = std::min(3, ladder.TopLevel); level <= ladder.TopLevel && violations > 0; level = level == ladder.TopLevel
-         ? level + 1
-         : std::min(ladder.TopLevel, std::max(level + 1, (3 * level + 1) / 2)))
+  for (const int level : commonLevels(ladder.TopLevel))
   {
+    if (violations == 0)
+    {
+      break;
+    }
     auto search = std::make_unique<ShapeSearch>(context, reference, ladder, true);
     try
     {
