@@ -22,6 +22,18 @@ using namespace shapesplines::test;
 
 namespace
 {
+/// What a toy run varies: its curve (see ToyCurve) and its ladder's options.
+struct Toy
+{
+  double Wiggle = 0.0;
+  int TwistedSpan = -1;
+  double Detour = 0.0;
+  bool Uniform = false;
+  unsigned Unmendable = 0;
+  bool RetryFromCommonLevel = false;
+  ProgressCallback Progress;
+};
+
 /**
  * A toy family with a level per span: the cubic through the data, on each
  * span blended with its chord by w = min(1, level / 2) (w = 1: the span is
@@ -38,14 +50,14 @@ class ToyCurve final : public Curve
 {
 public:
   ToyCurve(const CleanPolyline& data, const std::vector<double>& knots, std::vector<int> levels,
-    double wiggle, int twistedSpan, double detour = 0.0)
+    const Toy& toy)
     : Curve(knots, data.Closed)
     , Cubic(CubicSpline::interpolate(data.Points, knots, data.Closed))
     , Points(data.Points)
     , Levels(std::move(levels))
-    , Wiggle(wiggle)
-    , TwistedSpan(twistedSpan)
-    , Detour(detour)
+    , Wiggle(toy.Wiggle)
+    , TwistedSpan(toy.TwistedSpan)
+    , Detour(toy.Detour)
   {
   }
 
@@ -130,23 +142,23 @@ struct ToyRun
   std::vector<int> FirstRaise; ///< the levels of the first round's curve
 };
 
-CurveBuilder toyBuilder(ToyRun& run, double wiggle = 0.0, bool uniform = false,
-  const ProgressCallback& progress = {}, int twistedSpan = -1, unsigned unmendable = 0)
+CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
 {
-  return [&run, wiggle, uniform, progress, twistedSpan, unmendable](const FitContext& context) {
+  return [&run, toy](const FitContext& context) {
     ShapeLadder ladder;
     ladder.TopLevel = 2;
-    ladder.Uniform = uniform;
-    ladder.Unmendable = unmendable;
+    ladder.Uniform = toy.Uniform;
+    ladder.Unmendable = toy.Unmendable;
+    ladder.RetryFromCommonLevel = toy.RetryFromCommonLevel;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
       if (++run.Builds == 2)
       {
         run.FirstRaise = levels;
       }
-      return std::make_unique<ToyCurve>(context.Data, context.Knots, levels, wiggle, twistedSpan);
+      return std::make_unique<ToyCurve>(context.Data, context.Knots, levels, toy);
     };
     FitOptions options = context.Options;
-    options.Progress = progress;
+    options.Progress = toy.Progress;
     const FitContext withProgress{ context.Data, context.Knots, options, context.CoordinateNoise,
       context.PointValues };
     AutomaticShape found = preserveShapeAutomatically(withProgress, context.Data, ladder);
@@ -186,8 +198,10 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
   // alone twists: the first round raises spans 19 to 21, and no other.
   const std::vector<Vec3> points = helix(16, 3);
   constexpr int Twisted = 20;
+  Toy twisted;
+  twisted.TwistedSpan = Twisted;
   ToyRun run;
-  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, 0.0, false, {}, Twisted));
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, twisted));
   EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations();
   ASSERT_FALSE(run.FirstRaise.empty());
   for (int j = 0; j < static_cast<int>(run.FirstRaise.size()); ++j)
@@ -207,9 +221,11 @@ TEST(AutomaticShape, ASpanFailingOnlyWhatTheLadderCannotMendIsNotRaised)
   const std::vector<Vec3> points = helix(16, 3);
   constexpr int Twisted = 20;
   const unsigned onSpan = criterionBit(ShapeCriterion::TorsionSignOnSpan);
+  Toy unmendable;
+  unmendable.TwistedSpan = Twisted;
+  unmendable.Unmendable = onSpan;
   ToyRun run;
-  const FittedPolyline fit =
-    fitPolyline(points, FitOptions{}, toyBuilder(run, 0.0, false, {}, Twisted, onSpan));
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, unmendable));
   EXPECT_EQ(fit.Audit.violations(), 1);
   EXPECT_EQ(fit.Audit.SpanMask[Twisted], onSpan);
   EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
@@ -217,8 +233,10 @@ TEST(AutomaticShape, ASpanFailingOnlyWhatTheLadderCannotMendIsNotRaised)
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
 {
+  Toy uniform;
+  uniform.Uniform = true;
   ToyRun run;
-  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.0, true));
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, uniform));
   EXPECT_TRUE(fit.Audit.preserving());
   EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), run.Levels.front()),
     static_cast<long>(run.Levels.size()));
@@ -234,21 +252,12 @@ TEST(AutomaticShape, SearchesFromACommonLevelWhereOneStepUpBreaksTheBounds)
   ASSERT_GT(cubic.Audit.violations(), 0);
   for (const bool retry : { false, true })
   {
-    std::vector<int> levels;
-    const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, [&](const FitContext& context) {
-      ShapeLadder ladder;
-      ladder.TopLevel = 2;
-      ladder.RetryFromCommonLevel = retry;
-      ladder.Build = [&](const std::vector<int>& at) -> std::unique_ptr<Curve> {
-        return std::make_unique<ToyCurve>(context.Data, context.Knots, at, 0.0, -1, 5.0);
-      };
-      AutomaticShape found = preserveShapeAutomatically(context, context.Data, ladder);
-      levels = found.Levels;
-      BuiltCurve built;
-      built.Spline = std::move(found.Spline);
-      built.Audit = std::move(found.Audit);
-      return built;
-    });
+    Toy detour;
+    detour.Detour = 5.0;
+    detour.RetryFromCommonLevel = retry;
+    ToyRun run;
+    const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, detour));
+    const std::vector<int>& levels = run.Levels;
     const long spans = static_cast<long>(levels.size());
     if (retry)
     {
@@ -268,8 +277,10 @@ TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
   // Every level adds a wiggle out of the data's plane: raising only adds
   // violations. The mode ends with the start's curve, after a few rounds.
   const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  Toy wiggling;
+  wiggling.Wiggle = 0.05;
   ToyRun run;
-  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.05));
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, wiggling));
   EXPECT_EQ(fit.Audit.violations(), cubic.Audit.violations());
   EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
   EXPECT_LE(run.Builds, 10);
@@ -278,13 +289,15 @@ TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
 TEST(AutomaticShape, ReportsProgressEveryRoundAndStopsWhenAsked)
 {
   int calls = 0;
+  Toy counted;
+  counted.Progress = [&](double) { return ++calls > 0; };
   ToyRun run;
-  fitPolyline(akima(), FitOptions{}, toyBuilder(run, 0.0, false, [&](double) { return ++calls > 0; }));
+  fitPolyline(akima(), FitOptions{}, toyBuilder(run, counted));
   EXPECT_GE(calls, 2);
+  Toy stopping;
+  stopping.Progress = [](double) { return false; };
   ToyRun stopped;
-  EXPECT_THROW(
-    fitPolyline(akima(), FitOptions{}, toyBuilder(stopped, 0.0, false, [](double) { return false; })),
-    FitAborted);
+  EXPECT_THROW(fitPolyline(akima(), FitOptions{}, toyBuilder(stopped, stopping)), FitAborted);
 }
 
 TEST(AutomaticShape, KnotLevelsTakeTheHigherSpan)
