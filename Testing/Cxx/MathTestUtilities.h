@@ -150,16 +150,22 @@ inline std::vector<double> randomParameters(int count, double from, double to, u
   return t;
 }
 
-/// count points at random places along two turns of the helix a = 1, b = 0.25
-/// (close pairs among them), with noise of the radius' fraction `noise`.
-inline std::vector<Vec3> unevenNoisyHelixPoints(int count, double noise, unsigned seed)
+/// count exact points at random places along two turns of the helix a = 1, b
+/// (b = 0: the unit circle): close pairs among them.
+inline std::vector<Vec3> randomlySpacedHelix(int count, double b, unsigned seed)
 {
   std::vector<Vec3> points;
   for (const double t : randomParameters(count, 0.0, 4.0 * Pi, seed))
   {
-    points.emplace_back(std::cos(t), std::sin(t), 0.25 * t);
+    points.emplace_back(std::cos(t), std::sin(t), b * t);
   }
-  return withNoise(points, noise, seed + 1000);
+  return points;
+}
+
+/// The same on the helix b = 0.25, with noise of the radius' fraction `noise`.
+inline std::vector<Vec3> unevenNoisyHelixPoints(int count, double noise, unsigned seed)
+{
+  return withNoise(randomlySpacedHelix(count, 0.25, seed), noise, seed + 1000);
 }
 
 /// count points of one period of the trefoil knot (an open line: the period

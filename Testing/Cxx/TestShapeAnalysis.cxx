@@ -73,15 +73,14 @@ TEST(DiscreteShape, HelixHasPositiveTorsionAndConvergingCurvature)
 
 namespace
 {
-/// count points at random parameters of two turns of the helix a = 1, b = 0.25
-/// (tilted out of the axes), or of the circle b = 0: close pairs among them.
-std::vector<Vec3> randomlySpacedHelix(int count, double b, unsigned seed)
+/// randomlySpacedHelix() tilted out of the axes (a circle's plane too).
+std::vector<Vec3> tiltedRandomlySpacedHelix(int count, double b, unsigned seed)
 {
   const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).matrix();
-  std::vector<Vec3> points;
-  for (const double t : randomParameters(count, 0.0, 4.0 * Pi, seed))
+  std::vector<Vec3> points = randomlySpacedHelix(count, b, seed);
+  for (Vec3& p : points)
   {
-    points.push_back(tilt * Vec3(std::cos(t), std::sin(t), b * t));
+    p = tilt * p;
   }
   return points;
 }
@@ -94,7 +93,7 @@ TEST(DiscreteShape, CloseSamplesOfAHelixAreNotCoplanar)
   // more than epsilon_2: the audit demanded a planar span there, which no
   // curve close to the helix has (an interpolating cubic failed 101 of such
   // spans, 400 points). Points of a plane stay coplanar however close.
-  const CleanPolyline twisting = cleanPolyline(randomlySpacedHelix(400, 0.25, 3), false);
+  const CleanPolyline twisting = cleanPolyline(tiltedRandomlySpacedHelix(400, 0.25, 3), false);
   const DiscreteShape shape = discreteShape(twisting);
   const ShapeTolerances tolerances;
   int tinyTripleProducts = 0;
@@ -113,7 +112,7 @@ TEST(DiscreteShape, CloseSamplesOfAHelixAreNotCoplanar)
   }
   EXPECT_GT(tinyTripleProducts, 50); // the case above occurs in these data
 
-  const CleanPolyline planar = cleanPolyline(randomlySpacedHelix(400, 0.0, 3), false);
+  const CleanPolyline planar = cleanPolyline(tiltedRandomlySpacedHelix(400, 0.0, 3), false);
   const DiscreteShape flat = discreteShape(planar);
   for (int i = 1; i < planar.numberOfSpans() - 1; ++i)
   {
