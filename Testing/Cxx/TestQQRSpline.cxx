@@ -903,6 +903,46 @@ TEST(QQRSpline, PerKnotExponentsKeepC2ForTheControlPolygonCurveOpenAndClosed)
   }
 }
 
+TEST(QQRSpline, AnExponentScalesTheCurvatureAtItsKnotWithoutTurningIt)
+{
+  // Why no exponent mends convexity at a knot or collinearity (criteria (i),
+  // (ii.1)): at a knot the qqr curve's r' = kappa (e1 - e0) / h and
+  // r'' = kappa (kappa - 1) (e0 - 2 e1 + e2) / h^2, and no construction's Bezier
+  // points depend on the exponents (closed: no end condition), so the
+  // curvature vector there is the one at kappa = 4 times 4 (kappa - 1) / (3
+  // kappa): same direction, never zero where it was not.
+  std::mt19937 random(97);
+  std::uniform_real_distribution<double> exponent(3.2, 150.0);
+  const std::vector<Vec3> points = RandomPoints(12, random);
+  const int n = static_cast<int>(points.size());
+  const std::vector<double> t = RandomKnots(n + 1, random, 1.5);
+  std::vector<double> kappa(n);
+  for (double& k : kappa)
+  {
+    k = exponent(random);
+  }
+  auto curvatureVector = [](const Curve& curve, int k) {
+    const Derivatives d = curve.evaluateOnSpan(k, curve.knots()[k], 2);
+    return Vec3(d[1].cross(d[2]).cross(d[1]) / std::pow(d[1].norm(), 4));
+  };
+  for (const QQRConstruction construction : { QQRConstruction::Interpolation,
+         QQRConstruction::LocalInterpolation, QQRConstruction::ControlPolygon })
+  {
+    const QQRSpline four = QQRSpline::make(construction, points, t, true, 4.0, 4.0);
+    const QQRSpline raised = QQRSpline::make(construction, points, t, true, kappa);
+    double worst = 0.0;
+    for (int k = 0; k < n; ++k)
+    {
+      const Vec3 expected = curvatureVector(four, k) * 4.0 * (kappa[k] - 1.0) / (3.0 * kappa[k]);
+      worst = std::max(worst, (curvatureVector(raised, k) - expected).norm() / expected.norm());
+    }
+    std::printf("construction %d, closed, an exponent per knot in [3.2, 150]: curvature vector at "
+                "the knots against 4 (kappa - 1) / (3 kappa) times kappa = 4's, off by %.1e\n",
+      static_cast<int>(construction), worst);
+    EXPECT_LT(worst, 1e-9);
+  }
+}
+
 TEST(QQRSpline, PerPointLocalParametersKeepC2AndTheInterpolation)
 {
   // QQRKnotShape: a z (and for the control polygon an x and a y) per point,
