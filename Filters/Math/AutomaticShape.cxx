@@ -84,24 +84,13 @@ public:
   bool startAt(int level)
   {
     std::fill(this->Levels.begin(), this->Levels.end(), level);
-    constexpr int MostResets = 8;
-    for (int reset = 0; reset <= MostResets; ++reset)
+    if (!this->settleWithinBounds(false))
     {
-      this->buildWhole();
-      bool lowered = false;
-      for (const int j : this->around(this->beyondBounds(), this->Ladder.Reach))
-      {
-        lowered = lowered || this->Levels[j] != 0;
-        this->Levels[j] = 0;
-      }
-      if (!lowered)
-      {
-        this->Best = this->Levels;
-        this->BestViolations = this->Audit.violations();
-        return true;
-      }
+      return false;
     }
-    return false;
+    this->Best = this->Levels;
+    this->BestViolations = this->Audit.violations();
+    return true;
   }
 
   int violations() const { return this->Audit.violations(); }
@@ -234,6 +223,35 @@ private:
       beyond[j] = this->beyond(this->figures(j), unbeatable);
     }
     return beyond;
+  }
+
+  /**
+   * Lowers to level 0 the spans around those beyond the bounds and rebuilds,
+   * until none is but where level 0 already was (a global solve moves spans
+   * the search did not check). False if that takes more than a few rebuilds.
+   * built: the current curve is of these levels, audited whole.
+   */
+  bool settleWithinBounds(bool built)
+  {
+    constexpr int MostResets = 8;
+    for (int reset = 0; reset <= MostResets; ++reset, built = false)
+    {
+      if (!built)
+      {
+        this->buildWhole();
+      }
+      bool lowered = false;
+      for (const int j : this->around(this->beyondBounds(), this->Ladder.Reach))
+      {
+        lowered = lowered || this->Levels[j] != 0;
+        this->Levels[j] = 0;
+      }
+      if (!lowered)
+      {
+        return true;
+      }
+    }
+    return false;
   }
 
   bool canRise(int j) const
@@ -416,14 +434,21 @@ private:
   {
     AutomaticShape result;
     result.Rounds = rounds;
-    if (this->Best != this->Levels)
-    {
-      this->Levels = this->Best;
-      this->buildWhole();
-    }
-    else if (!this->AuditedWhole)
+    // The search's audits see the samples only; the curve kept must keep the
+    // bounds between them too (a peak 20 times higher than they show is left
+    // unseen): its audit refines each span's highest curvature.
+    constexpr double PeakRefinement = 0.05;
+    this->Auditor.refinePeaksAbove(PeakRefinement * this->CurvatureBound);
+    const bool current = this->Best == this->Levels;
+    if (current)
     {
       this->auditCurve();
+    }
+    this->Levels = this->Best;
+    if (!this->settleWithinBounds(current))
+    {
+      std::fill(this->Levels.begin(), this->Levels.end(), 0);
+      this->buildWhole();
     }
     result.Spline = std::move(this->Curve);
     result.Audit = std::move(this->Audit);
