@@ -434,13 +434,8 @@ private:
   {
     AutomaticShape result;
     result.Rounds = rounds;
-    // The search's audits see the samples only; the curve kept must keep the
-    // bounds between them too (a peak 20 times higher than they show is left
-    // unseen): its audit refines each span's highest curvature.
-    constexpr double PeakRefinement = 0.05;
-    this->Auditor.refinePeaksAbove(PeakRefinement * this->CurvatureBound);
     const bool current = this->Best == this->Levels;
-    if (current)
+    if (current && !this->AuditedWhole)
     {
       this->auditCurve();
     }

@@ -10,7 +10,6 @@
 #include "ShapeAnalysis.h"
 
 #include <functional>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -192,11 +191,9 @@ public:
 
   /// Largest curvature on span j's samples (the curve's units), at the
   /// bottom of a dip in its speed, where a near-cusp's spike can hide between
-  /// them, and between the highest sample's neighbours (refinePeaksAbove).
+  /// them, and between samples that turn the tangent more than their
+  /// curvature explains (a tension's boundary layer at a knot).
   double largestCurvature(int span) const { return this->Curvature[span]; }
-  /// From the next audit on, a span whose sampled curvature rises above this
-  /// has its peak refined between the highest sample's neighbours (infinity: none).
-  void refinePeaksAbove(double curvature) { this->PeakThreshold = curvature; }
   /// Lowest |s'| on span j's samples (and dip) over its chord speed |s(t_j+1) - s(t_j)| / h_j.
   double lowestSpeed(int span) const { return this->Speed[span]; }
   /// Largest distance of span j's samples from the reference's segment j,
@@ -211,7 +208,6 @@ private:
   double CoordinateNoise;
   double Diagonal;
   const CleanPolyline& Reference;
-  double PeakThreshold = std::numeric_limits<double>::infinity();
   std::vector<double> Curvature;
   std::vector<double> Speed;
   std::vector<double> Deviation;

@@ -413,9 +413,8 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
     std::printf("%s, 180 unevenly spaced noisy helices: %d violations fixed, %d automatic, largest "
                 "curvature over the data's %.3g\n",
       family.Name, fixedTotal, automaticTotal, largest);
-    // What each family leaves at most (measured 0.23%, 0.42%, 5.5%, 73%; the
-    // quintic left 18% before its search from a common level, and 2.6% while
-    // peaks of curvature between the audit's samples went unseen).
+    // What each family leaves at most (measured 0.06%, 0.22%, 2.9%, 73%; the
+    // quintic left 18% before its search from a common level).
     const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.01 },
       { "variable degree", 0.01 }, { "tension quintic", 0.06 }, { "qqr", 0.8 } };
     EXPECT_LT(automaticTotal, leftAtMost.at(family.Name) * fixedTotal) << family.Name;
@@ -466,8 +465,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
   // Users' data in a plane (2D tracks, digitised outlines, tool paths) and
   // closed outlines: no torsion at all in the plane, the bounds hold between
   // samples too (a quintic kept 1.25e3 times the data's curvature between the
-  // audit's samples before the curve kept was audited with its peaks
-  // refined), never more violations than the fixed parameters'. The
+  // audit's samples before the audit looked between samples that turn more
+  // than their curvatures explain), never more violations than the fixed
+  // parameters'. The
   // generalized cubic and the variable degree spline remove nearly all; the
   // quintic most; the qqr exponents next to none in a plane (at a knot an
   // exponent only scales the curvature vector:
@@ -490,7 +490,7 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       }
     }
   }
-  // What each family leaves at most (measured 0.19%, 1.6%, 6.4%, 92%).
+  // What each family leaves at most (measured 0.38%, 1.1%, 3.1%, 92%).
   const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.03 },
     { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 1.0 } };
   for (const Family& family : families())
