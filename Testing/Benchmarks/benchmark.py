@@ -321,7 +321,8 @@ def automatic_cost(lines=4000, timed_lines=1000):
 
 def users_data(rng):
     """Data that looks like users': noisy helices and trefoils, random 3D
-    polylines, 3D staircases of straight runs (name, points, straight runs?)."""
+    polylines, 3D staircases of straight runs, noisy planar spirals at random
+    places (name, points, straight runs?)."""
     cases = []
     for count in (25, 50, 100, 200):
         for noise in (0.001, 0.005, 0.01):
@@ -346,6 +347,12 @@ def users_data(rng):
             step[axis] = rng.choice([-1, 1]) * rng.uniform(1, 3) / 4
             points += [points[-1] + step * (k + 1) for k in range(4)]
         cases.append(("staircase", np.array(points), True))
+    for count in (40, 80, 160):
+        for noise in (0.001, 0.005):
+            t = np.sort(rng.uniform(0, 4 * np.pi, count))
+            xy = (1 + 0.19 * t)[:, None] * np.column_stack([np.cos(t), np.sin(t)])
+            xy += rng.normal(0, 3.4 * noise, xy.shape)
+            cases.append(("planar spiral", np.column_stack([xy, np.zeros(count)]), False))
     return cases
 
 
@@ -374,10 +381,10 @@ def shape_on_users_data(seed=7):
     aorta_curvature = [discrete_curvature(line) for line in aorta_lines(aorta)]
     print("\nShape on users' data, every family's default (automatic) mode against its fixed mode "
           "(%d generated lines, and the aorta in Data/):" % len(cases))
-    print("%-9s %-12s %7s %22s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
+    print("%-9s %-13s %7s %22s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
                                             "curvature / data's", "cost"))
     for family, proxy, automatic in FAMILIES[1:]:
-        for kind in ("helix", "trefoil", "random walk", "staircase"):
+        for kind in ("helix", "trefoil", "random walk", "staircase", "planar spiral"):
             chosen = [c for c in cases if c[0] == kind]
             totals, ratio = {"fixed": [0, 0.0], "auto": [0, 0.0]}, 0.0
             for _, xyz, _ in chosen:
@@ -388,12 +395,12 @@ def shape_on_users_data(seed=7):
                     totals[mode][1] += seconds
                     if mode == "auto":
                         ratio = max(ratio, line_curvatures(output).max() / discrete_curvature(xyz))
-            print("%-9s %-12s %7d %22s %20.3g %7.1fx" % (
+            print("%-9s %-13s %7d %22s %20.3g %7.1fx" % (
                 family, kind, len(chosen), "%d / %d" % (totals["fixed"][0], totals["auto"][0]), ratio,
                 totals["auto"][1] / totals["fixed"][1]))
         fixed, _ = fitted(proxy, aorta, "Sequential", **{automatic: 0})
         auto, _ = fitted(proxy, aorta, "Sequential")
-        print("%-9s %-12s %7d %22s %20s" % (
+        print("%-9s %-13s %7d %22s %20s" % (
             family, "aorta", 2, "%s / %s" % ("+".join("%d" % v for v in cell_array(fixed, "ShapeViolations")),
                                              "+".join("%d" % v for v in cell_array(auto, "ShapeViolations"))),
             "/".join("%.3g" % (k / d) for k, d in zip(line_curvatures(auto), aorta_curvature))))
