@@ -41,7 +41,8 @@ public:
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
         context.Options.AuditSubdivisions, context.CoordinateNoise,
-        ladder.Bounds.CurvatureChange > 0.0)
+        ladder.Bounds.CurvatureChange > 0.0 ? AuditFigures::BoundsAndSampleCurvatures
+                                            : AuditFigures::Bounds)
     , Levels(this->Spans, 0)
     , Frozen(this->Spans, 0)
     , Stalls(this->Spans, 0)

@@ -183,17 +183,19 @@ bool hasNormal(const std::vector<FrenetFrame>& frames, const std::vector<double>
 
 CurveAuditor::CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
   const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
-  bool keepSampleCurvatures)
+  AuditFigures figures)
   : Auditor(reference, shape, tolerances)
   , Subdivisions(std::max(subdivisions, 1))
   , CoordinateNoise(coordinateNoise)
   , Diagonal(boundingBoxDiagonal(reference.Points))
   , Reference(reference)
+  , BoundFigures(figures != AuditFigures::None)
   , Curvature(std::max(reference.numberOfSpans(), 0), 0.0)
   , Speed(std::max(reference.numberOfSpans(), 0), 1.0)
   , Deviation(std::max(reference.numberOfSpans(), 0), 0.0)
   , LocalLength(std::max(reference.numberOfSpans(), 0), 1.0)
-  , SampleCurvatures(keepSampleCurvatures ? std::max(reference.numberOfSpans(), 0) : 0)
+  , SampleCurvatures(
+      figures == AuditFigures::BoundsAndSampleCurvatures ? std::max(reference.numberOfSpans(), 0) : 0)
 {
   // The longest of a segment and its neighbours: how far a curve near the
   // polygon may stray from it there.
@@ -278,11 +280,15 @@ void CurveAuditor::audit(const Curve& curve, int j)
     speed = std::min(speed, speeds[k]);
     deviation = std::max(deviation, distanceToSegment(values[k][0]));
   }
+  this->Deviation[j] = deviation / this->LocalLength[j];
+  if (!this->BoundFigures)
+  {
+    return;
+  }
   const auto [dipCurvature, dipSpeed] = speedDip(curve, j, speeds, knots[j], h);
   const double between = curvatureBetweenSamples(curve, j, values, frames, knots[j], h);
   this->Curvature[j] = std::max({ curvature, dipCurvature, between });
   this->Speed[j] = chordSpeed > 0.0 ? std::min(speed, dipSpeed) / chordSpeed : 1.0;
-  this->Deviation[j] = deviation / this->LocalLength[j];
 }
 
 ShapeAudit CurveAuditor::result() const

@@ -165,23 +165,33 @@ private:
   std::vector<Vec3> NextNormals;  ///< per block before it: the first normal after the block
 };
 
+/// What a CurveAuditor measures besides the audit and each span's distance
+/// from the reference: nothing (a fixed curve's audit); the figures an
+/// automatic mode's bounds read (largestCurvature, lowestSpeed), looked for
+/// between the samples too; and with them every sample's curvature
+/// (sampleCurvatures), which only a bound on the change of curvature needs.
+enum class AuditFigures
+{
+  None,
+  Bounds,
+  BoundsAndSampleCurvatures
+};
+
 /**
  * The shape audit of a curve against its reference polygon, kept span by
  * span: an automatic mode audits the whole curve once, then again only the
  * spans a change can move. Each span is sampled uniformly (subdivisions + 1
  * samples, both knots included); besides its findings it keeps the span's
- * largest curvature, its lowest speed relative to its chord and its largest
- * distance from the reference polygon, the bounds an automatic mode must not
- * cross. The reference and shape must outlive it.
+ * largest distance from the reference polygon and, asked for (figures), its
+ * largest curvature and its lowest speed relative to its chord, the bounds
+ * an automatic mode must not cross. The reference and shape must outlive it.
  */
 class CurveAuditor
 {
 public:
-  /// keepSampleCurvatures: keep every sample's curvature (sampleCurvatures),
-  /// which only a bound on the change of curvature needs.
   CurveAuditor(const CleanPolyline& reference, const DiscreteShape& shape,
     const ShapeTolerances& tolerances, int subdivisions, double coordinateNoise,
-    bool keepSampleCurvatures = false);
+    AuditFigures figures = AuditFigures::None);
 
   /// (Re-)audits span j of curve, forgetting what the span's samples found before.
   void audit(const Curve& curve, int span);
@@ -208,6 +218,7 @@ private:
   double CoordinateNoise;
   double Diagonal;
   const CleanPolyline& Reference;
+  bool BoundFigures;
   std::vector<double> Curvature;
   std::vector<double> Speed;
   std::vector<double> Deviation;

@@ -423,6 +423,16 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
 
 namespace
 {
+/// The points moved into the plane z = 0.
+std::vector<Vec3> flattened(std::vector<Vec3> points)
+{
+  for (Vec3& p : points)
+  {
+    p.z() = 0.0;
+  }
+  return points;
+}
+
 /// count points at random places along two turns of a planar spiral whose
 /// radius grows from 1 to 3.4, in the plane z = 0, with in-plane noise of a
 /// fraction `noise` of the outer radius.
@@ -433,12 +443,7 @@ std::vector<Vec3> noisyPlanarSpiral(int count, double noise, unsigned seed)
   {
     points.emplace_back((1.0 + 0.19 * t) * std::cos(t), (1.0 + 0.19 * t) * std::sin(t), 0.0);
   }
-  points = withNoise(points, noise * 3.4, seed + 1000);
-  for (Vec3& p : points)
-  {
-    p.z() = 0.0;
-  }
-  return points;
+  return flattened(withNoise(points, noise * 3.4, seed + 1000));
 }
 
 /// count points at random places around the ellipse 2 cos t, sin t (a closed
@@ -452,11 +457,7 @@ std::vector<Vec3> noisyEllipse(int count, double noise, bool lifted, unsigned se
     points.emplace_back(2.0 * std::cos(t), std::sin(t), 0.0);
   }
   points = withNoise(points, noise * 4.5, seed + 1000);
-  for (Vec3& p : points)
-  {
-    p.z() = lifted ? p.z() : 0.0;
-  }
-  return points;
+  return lifted ? points : flattened(points);
 }
 } // namespace
 
@@ -467,10 +468,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
   // samples too (a quintic kept 1.25e3 times the data's curvature between the
   // audit's samples before the audit looked between samples that turn more
   // than their curvatures explain), never more violations than the fixed
-  // parameters'. The
-  // generalized cubic and the variable degree spline remove nearly all; the
-  // quintic most; the qqr exponents next to none in a plane (at a knot an
-  // exponent only scales the curvature vector:
+  // parameters'. The generalized cubic and the variable degree spline remove
+  // nearly all; the quintic most; the qqr exponents next to none in a plane
+  // (at a knot an exponent only scales the curvature vector:
   // QQRSpline.AnExponentScalesTheCurvatureAtItsKnotWithoutTurningIt).
   struct Line
   {

@@ -81,7 +81,7 @@ TEST(CurveAuditor, FindsANearCuspBetweenItsSamples)
   const CleanPolyline reference =
     cleanPolyline({ curve.evaluate(0.0, 0)[0], curve.evaluate(1.0, 0)[0] }, false);
   const DiscreteShape shape = discreteShape(reference); // the auditor keeps a reference
-  CurveAuditor auditor(reference, shape, ShapeTolerances{}, 16, 0.0);
+  CurveAuditor auditor(reference, shape, ShapeTolerances{}, 16, 0.0, AuditFigures::Bounds);
   auditor.audit(curve, 0);
   EXPECT_NEAR(auditor.largestCurvature(0), 2.0 / (e * e), 0.01 * 2.0 / (e * e));
   const double chordSpeed = reference.segment(0).norm();
