@@ -48,6 +48,7 @@ public:
     , Stalls(this->Spans, 0)
     , Step(this->Spans, 1)
     , RaisedBefore(this->Spans, 0)
+    , Stale(this->Spans, 1)
   {
     const double largestTurn = *std::max_element(this->Shape.Curvature.begin(), this->Shape.Curvature.end());
     const bool straightRuns =
@@ -305,7 +306,7 @@ private:
 
   void auditWhole()
   {
-    this->auditCurve();
+    this->auditStale();
     this->AuditedWhole = true;
     ++this->WholeAudits;
     if (this->Best == this->Levels)
@@ -314,10 +315,18 @@ private:
     }
   }
 
-  /// The current curve's audit, every span.
-  void auditCurve()
+  /// The current curve's audit, every span not yet audited on it.
+  void auditStale()
   {
-    this->Auditor.auditAll(*this->Curve, this->Context.Options.Progress);
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      reportProgress(this->Context.Options.Progress, j, 1024, static_cast<double>(j) / this->Spans);
+      if (this->Stale[j])
+      {
+        this->Auditor.audit(*this->Curve, j);
+      }
+    }
+    std::fill(this->Stale.begin(), this->Stale.end(), 0);
     this->Audit = this->Auditor.result();
   }
 
@@ -325,15 +334,18 @@ private:
   void buildWhole()
   {
     this->Curve = this->Ladder.Build(this->Levels);
-    this->auditCurve();
+    std::fill(this->Stale.begin(), this->Stale.end(), 1);
+    this->auditStale();
   }
 
   void rebuild(const std::vector<int>& moved)
   {
     this->Curve = this->Ladder.Build(this->Levels);
+    std::fill(this->Stale.begin(), this->Stale.end(), 1);
     for (const int j : moved)
     {
       this->Auditor.audit(*this->Curve, j);
+      this->Stale[j] = 0;
     }
   }
 
@@ -438,7 +450,7 @@ private:
     const bool current = this->Best == this->Levels;
     if (current && !this->AuditedWhole)
     {
-      this->auditCurve();
+      this->auditStale();
     }
     this->Levels = this->Best;
     if (!this->settleWithinBounds(current))
@@ -466,6 +478,7 @@ private:
   std::vector<int> Step;
   std::vector<char> RaisedBefore; ///< raised in the last round
   std::unique_ptr<shapesplines::Curve> Curve;
+  std::vector<char> Stale; ///< not audited on the current curve (a global solve moves every span)
   ShapeAudit Audit;
   bool AuditedWhole = true;
   int WholeAudits = 0;

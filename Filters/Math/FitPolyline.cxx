@@ -129,10 +129,12 @@ double curvatureBetweenSamples(const Curve& curve, int j, const std::vector<Deri
   {
     const Vec3& a = frames[k].Tangent;
     const Vec3& b = frames[k + 1].Tangent;
-    const double turn = std::atan2(a.cross(b).norm(), a.dot(b));
-    const double explained = UnexplainedTurn * (values[k + 1][0] - values[k][0]).norm() *
-      std::max(frames[k].Curvature, frames[k + 1].Curvature);
-    if (turn <= std::max(explained, SmallestTurn))
+    const double explained = std::max(SmallestTurn,
+      UnexplainedTurn * (values[k + 1][0] - values[k][0]).norm() *
+        std::max(frames[k].Curvature, frames[k + 1].Curvature));
+    // The turn is at most its tangent (sine over cosine): most pairs pass without an atan2.
+    const double sine = a.cross(b).norm(), cosine = a.dot(b);
+    if ((cosine > 0.0 && sine <= explained * cosine) || std::atan2(sine, cosine) <= explained)
     {
       continue;
     }
