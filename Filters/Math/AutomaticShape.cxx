@@ -66,7 +66,32 @@ public:
     return this->search();
   }
 
-  /// Builds level 0 and audits it whole.
+  /**
+   * Searches again only around the spans an earlier search left failing:
+   * outside that window the spans keep that search's levels, frozen; inside,
+   * they start from level 0 (start) or a common level (startAt). A long
+   * line's few violations left then cost a search of their neighbourhood,
+   * not of the whole line.
+   */
+  void keepOutside(const AutomaticShape& earlier, int reach)
+  {
+    std::vector<char> failing(this->Spans, 0);
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      failing[j] = earlier.Audit.SpanMask[j] != 0;
+    }
+    std::fill(this->Frozen.begin(), this->Frozen.end(), 1);
+    for (const int j : this->around(failing, reach))
+    {
+      this->Frozen[j] = 0;
+    }
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      this->Levels[j] = this->Frozen[j] ? earlier.Levels[j] : 0;
+    }
+  }
+
+  /// Builds the start levels (level 0 unless keepOutside) and audits them whole.
   void start()
   {
     this->buildWhole();
@@ -85,7 +110,10 @@ public:
    */
   bool startAt(int level)
   {
-    std::fill(this->Levels.begin(), this->Levels.end(), level);
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      this->Levels[j] = this->Frozen[j] ? this->Levels[j] : level;
+    }
     if (!this->settleWithinBounds(false))
     {
       return false;
@@ -577,9 +605,10 @@ std::vector<int> commonLevels(int top)
  * bounds never reaches.
  */
 std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
-  const CleanPolyline& reference, const ShapeLadder& ladder, int violations)
+  const CleanPolyline& reference, const ShapeLadder& ladder, const AutomaticShape& earlier)
 {
   std::unique_ptr<ShapeSearch> best;
+  int violations = earlier.Audit.violations();
   for (const int level : commonLevels(ladder.TopLevel))
   {
     if (violations == 0)
@@ -587,6 +616,7 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
       break;
     }
     auto search = std::make_unique<ShapeSearch>(context, reference, ladder, true);
+    search->keepOutside(earlier, RetryReach);
     try
     {
       if (search->startAt(level) && search->violations() < violations)
@@ -621,7 +651,9 @@ AutomaticShape preserveShapeAutomatically(
   AutomaticShape found = ShapeSearch(context, reference, ladder, true).run();
   if (ladder.RetrySpanBySpan && found.Audit.violations() > 0)
   {
-    AutomaticShape again = ShapeSearch(context, reference, ladder, false).run();
+    ShapeSearch retry(context, reference, ladder, false);
+    retry.keepOutside(found, RetryReach);
+    AutomaticShape again = retry.run();
     if (again.Audit.violations() < found.Audit.violations())
     {
       found = std::move(again);
@@ -630,7 +662,7 @@ AutomaticShape preserveShapeAutomatically(
   if (ladder.RetryFromCommonLevel && found.Audit.violations() > 0)
   {
     std::optional<AutomaticShape> again =
-      searchFromCommonLevel(context, reference, ladder, found.Audit.violations());
+      searchFromCommonLevel(context, reference, ladder, found);
     if (again && again->Audit.violations() < found.Audit.violations())
     {
       found = std::move(*again);

@@ -79,6 +79,16 @@ struct ShapeLadder
   std::vector<double> ReferenceNoise;
 };
 
+/**
+ * How many spans on each side of one the first search left failing a retry
+ * (ShapeLadder::RetrySpanBySpan, RetryFromCommonLevel) searches again; the
+ * other spans keep the first search's levels. A retry of the whole line cost
+ * a 1e5-point noisy helix's variable degree spline 45 and 25 more rounds of
+ * whole-line solves for nothing (9 violations left by the first search;
+ * the retries in windows leave none, in two thirds of the time).
+ */
+constexpr int RetryReach = 32;
+
 /// The automatic mode's curve, its audit against the reference and the levels chosen.
 struct AutomaticShape
 {
@@ -104,7 +114,8 @@ struct AutomaticShape
  * audit of the whole curve catches the far effects of a global solve (then it
  * goes on). Returns the best curve met: the fewest violations, among those
  * within the bounds (of a second search, ShapeLadder::RetrySpanBySpan, or
- * a third, ShapeLadder::RetryFromCommonLevel, if it has fewer). Progress is
+ * a third, ShapeLadder::RetryFromCommonLevel, if it has fewer; both only
+ * within RetryReach of the spans left failing). Progress is
  * reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(

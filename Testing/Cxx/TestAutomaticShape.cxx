@@ -272,6 +272,40 @@ TEST(AutomaticShape, SearchesFromACommonLevelWhereOneStepUpBreaksTheBounds)
   }
 }
 
+TEST(AutomaticShape, SearchesAgainOnlyAroundWhatTheFirstSearchLeftFailing)
+{
+  // The Akima data after a straight run of 100 points: the cubic fails only
+  // in and near the Akima part. The first search keeps the cubic (one step
+  // up detours beyond the bounds); the retry from the common level searches
+  // only within RetryReach spans of the failing ones: the run's far spans keep level 0.
+  std::vector<Vec3> points;
+  for (int i = -100; i < 0; ++i)
+  {
+    points.emplace_back(i, 10.0, 0.0);
+  }
+  for (const Vec3& p : akima())
+  {
+    points.push_back(p);
+  }
+  const FittedPolyline cubic = fitPolyline(points, FitOptions{}, cubicBuilder());
+  ASSERT_GT(cubic.Audit.violations(), 0);
+  const int spans = static_cast<int>(cubic.Audit.SpanMask.size());
+  const int firstFailing = static_cast<int>(std::find_if(cubic.Audit.SpanMask.begin(),
+                             cubic.Audit.SpanMask.end(), [](unsigned mask) { return mask != 0; }) -
+    cubic.Audit.SpanMask.begin());
+  ASSERT_GT(firstFailing, 40); // the run's far spans pass as the cubic
+  Toy detour;
+  detour.Detour = 5.0;
+  detour.RetryFromCommonLevel = true;
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, detour));
+  EXPECT_TRUE(fit.Audit.preserving());
+  for (int j = 0; j < spans; ++j)
+  {
+    EXPECT_EQ(run.Levels[j], j < firstFailing - RetryReach ? 0 : 2) << "span " << j;
+  }
+}
+
 TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
 {
   // Every level adds a wiggle out of the data's plane: raising only adds
