@@ -1,6 +1,4 @@
 #include "AutomaticShape.h"
-#include <cstdio>
-#include <cstdlib>
 
 #include "ExtendedIndex.h"
 #include "SparseSolve.h"
@@ -404,9 +402,6 @@ private:
       this->rebuild(moved);
     }
     const ShapeAudit next = this->Auditor.result();
-    if (getenv("SS_DEBUG")) { fprintf(stderr, "round: viol %d -> %d raised:", this->Audit.violations(), next.violations());
-      for (int j = 0; j < this->Spans; ++j) if (raise[j]) fprintf(stderr, " %d(L%d)", j, this->Levels[j]);
-      fprintf(stderr, "\n"); }
     this->AuditedWhole = false;
     this->freezeStalled(raise, next);
     this->Audit = next;
@@ -426,7 +421,6 @@ private:
     {
       if (this->beyond(this->figures(j), before[j]))
       {
-        if (getenv("SS_DEBUG")) { const Figures f = this->figures(j); fprintf(stderr, "  beyond: span %d K %.3g (%.3g) speed %.3g (%.3g) dev %.3g (%.3g) change %.3g (%.3g) bound %.3g\n", j, f.Curvature, before[j].Curvature, f.Speed, before[j].Speed, f.Deviation, before[j].Deviation, f.Change, before[j].Change, this->CurvatureBound); }
         beyond[j] = anyBeyond = true;
       }
     }
@@ -493,9 +487,6 @@ private:
       std::fill(this->Levels.begin(), this->Levels.end(), 0);
       this->buildWhole();
     }
-    if (getenv("SS_DEBUG")) { fprintf(stderr, "finish: viol %d bound %.3g\n", this->Audit.violations(), this->CurvatureBound);
-      for (int j = 0; j < this->Spans; ++j) { const Figures f = this->figures(j);
-        if (this->Audit.SpanMask[j] || j % 10 == 0) fprintf(stderr, "  span %d mask %x L%d frozen %d stalls %d K %.3g speed %.3g dev %.3g\n", j, this->Audit.SpanMask[j], this->Levels[j], this->Frozen[j], this->Stalls[j], f.Curvature, f.Speed, f.Deviation); } }
     result.Spline = std::move(this->Curve);
     result.Audit = std::move(this->Audit);
     result.Levels = std::move(this->Levels);
