@@ -51,8 +51,12 @@ struct SamplingOptions
 /// can place every curve's samples in one output before computing any.
 struct SamplingPlan
 {
+  /// Arc length: each span measured in this many equal parameter pieces.
+  static constexpr int SpanPieces = 4;
+
   std::vector<long> PerSpan;
-  std::vector<double> SpanLengths; ///< in arc-length mode: where the samples go
+  /// In arc-length mode, where the samples go: the pieces' lengths, span by span.
+  std::vector<double> PieceLengths;
   bool LengthIncreased = false;    ///< the spacing was widened to respect MaximumSamples
   bool Closed = false;
 
