@@ -110,7 +110,8 @@ struct AutomaticShape
  * frozen (the curve after the undo is checked again: a global solve moves
  * with every level); a span whose level three times in a row does not bring it closer
  * to passing (fewer failures, or a tenth less ShapeAudit::SpanDeficiency) is
- * frozen too. Stops when nothing fails or nothing can rise; a last
+ * frozen too. Stops when nothing fails, nothing can rise, or eight rounds in
+ * a row meet no curve with fewer violations than the best; a last
  * audit of the whole curve catches the far effects of a global solve (then it
  * goes on). Returns the best curve met: the fewest violations, among those
  * within the bounds (of a second search, ShapeLadder::RetrySpanBySpan, or

@@ -27,6 +27,9 @@ struct Toy
 {
   double Wiggle = 0.0;
   int TwistedSpan = -1;
+  /// The twist sits two spans past the highest span raised (TwistedSpan
+  /// while none is): each raise moves the violation on, never away.
+  bool TwistRunsAhead = false;
   double Detour = 0.0;
   bool Uniform = false;
   unsigned Unmendable = 0;
@@ -56,7 +59,7 @@ public:
     , Points(data.Points)
     , Levels(std::move(levels))
     , Wiggle(toy.Wiggle)
-    , TwistedSpan(toy.TwistedSpan)
+    , TwistedSpan(toy.TwistRunsAhead ? twistAhead(this->Levels, toy.TwistedSpan) : toy.TwistedSpan)
     , Detour(toy.Detour)
   {
   }
@@ -119,6 +122,18 @@ public:
       d[1] += w * (b - a) / h;
     }
     return d;
+  }
+
+  static int twistAhead(const std::vector<int>& levels, int start)
+  {
+    for (int j = static_cast<int>(levels.size()) - 1; j >= 0; --j)
+    {
+      if (levels[j] > 0)
+      {
+        return j + 2;
+      }
+    }
+    return start;
   }
 
   std::vector<SpanParameter> spanParameters() const override
@@ -318,6 +333,22 @@ TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
   EXPECT_EQ(fit.Audit.violations(), cubic.Audit.violations());
   EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
   EXPECT_LE(run.Builds, 10);
+}
+
+TEST(AutomaticShape, GivesUpAfterRoundsThatMeetNoBetterCurve)
+{
+  // Each raise mends its span and moves the twist two spans on: one
+  // violation every round, never fewer, and no span raised twice (none
+  // frozen). The search stops eight rounds after its best, not at the 64
+  // rounds' cap (a long line's whole-line solves spent that way for nothing).
+  Toy ahead;
+  ahead.TwistedSpan = 20;
+  ahead.TwistRunsAhead = true;
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(helix(16, 16), FitOptions{}, toyBuilder(run, ahead));
+  EXPECT_EQ(fit.Audit.violations(), 1);
+  EXPECT_LE(run.Builds, 12);
+  EXPECT_GE(run.Builds, 9); // the eight rounds, after the start
 }
 
 TEST(AutomaticShape, ReportsProgressEveryRoundAndStopsWhenAsked)
