@@ -123,6 +123,8 @@ public:
    */
   vtkSetClampMacro(LocalParameters, int, PAPER, CUSTOM);
   vtkGetMacro(LocalParameters, int);
+  void SetLocalParametersToPaper() { this->SetLocalParameters(PAPER); }
+  void SetLocalParametersToCustom() { this->SetLocalParameters(CUSTOM); }
   vtkSetClampMacro(X, double, 0.0, 1.0);
   vtkGetMacro(X, double);
   vtkSetClampMacro(Y, double, 0.0, 1.0);
@@ -150,6 +152,8 @@ public:
    */
   vtkSetClampMacro(Continuity, int, C2, C2_FC);
   vtkGetMacro(Continuity, int);
+  void SetContinuityToC2() { this->SetContinuity(C2); }
+  void SetContinuityToC2FC() { this->SetContinuity(C2_FC); }
   vtkSetClampMacro(FrenetOrder, int, 1, 100);
   vtkGetMacro(FrenetOrder, int);
   ///@}

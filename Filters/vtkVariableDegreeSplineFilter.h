@@ -153,6 +153,8 @@ public:
    */
   vtkSetClampMacro(EndCondition, int, NATURAL, CLAMPED);
   vtkGetMacro(EndCondition, int);
+  void SetEndConditionToNatural() { this->SetEndCondition(NATURAL); }
+  void SetEndConditionToClamped() { this->SetEndCondition(CLAMPED); }
   ///@}
 
   ///@{

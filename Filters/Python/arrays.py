@@ -84,19 +84,25 @@ def _configure(spline, options):
     for key, value in options.items():
         name = _camel(key)
         if isinstance(value, str):
-            setter = getattr(spline, "Set%sTo%s" % (name, _camel(re.sub(r"[^a-z0-9]+", "_", value.lower()))), None)
-            if setter is None:
-                prefix = "Set%sTo" % name
-                choices = [re.sub(r"(?<!^)([A-Z])", r"_\1", m[len(prefix):]).lower()
-                           for m in dir(spline) if m.startswith(prefix)]
+            # SetContinuityToC2FC is continuity="c2_fc" (or "C2FC"), SetEndConditionToNotAKnot "not_a_knot".
+            prefix = "Set%sTo" % name
+            choices = {re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", m[len(prefix):]).lower(): m
+                       for m in dir(spline) if m.startswith(prefix) and m[len(prefix):][:1].isupper()}
+            wanted = [m for choice, m in choices.items() if _letters(choice) == _letters(value)]
+            if not wanted:
                 raise ValueError("%s: %s=%r must be one of %s" % (spline.GetClassName(), key, value,
-                                                                   ", ".join(choices) or "(none)"))
-            setter()
+                                                                   ", ".join(sorted(choices)) or "(none)"))
+            getattr(spline, wanted[0])()
         else:
             setter = getattr(spline, "Set" + name, None)
             if setter is None:
                 raise ValueError("%s has no option %s" % (spline.GetClassName(), key))
             setter(value)
+
+
+def _letters(text):
+    """text's letters and digits, lower case: how a choice is matched."""
+    return re.sub(r"[^a-z0-9]", "", text.lower())
 
 
 def _renamed(options):

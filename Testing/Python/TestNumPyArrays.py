@@ -3,6 +3,7 @@ through the wrapped filters. Run by Debian's python3 and by pvpython with
 PYTHONPATH at the build's site-packages: TestNumPyArrays.py
 """
 import math
+import re
 import sys
 import warnings
 
@@ -11,7 +12,7 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 
 import shapesplines
 from shapesplines import names
-from shapesplines.arrays import fit_curves
+from shapesplines.arrays import FAMILIES, fit_curves
 
 failures = []
 
@@ -230,6 +231,31 @@ raises(lambda: fit_curves([points, points], point_data={"r": [radius]}),
 raises(lambda: fit_curves([points, points], point_data={"r": [radius, pair]}),
        "point_data['r'] of line 1: shape (97, 2), but line 0 has (97,): every line needs the same components",
        "point_data with different components per line")
+
+# Every choice a filter names (Set<Option>To<Choice>) is a string argument,
+# in snake case, and does what the number does.
+for family, class_name in sorted(FAMILIES.items()):
+    spline = getattr(shapesplines, class_name)()
+    for method in sorted(m for m in dir(spline) if re.fullmatch(r"Set[A-Za-z]+To[A-Z][A-Za-z0-9]*", m)):
+        option, choice = re.fullmatch(r"Set([A-Za-z]+?)To([A-Z][A-Za-z0-9]*)", method).groups()
+        if not hasattr(spline, "Get%sMinValue" % option):
+            continue  # not an option with named choices (SetInputArrayToProcess)
+        snake = lambda name: re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
+        getattr(spline, method)()
+        number = getattr(spline, "Get" + option)()
+        outcomes = []
+        for value in (snake(choice), number):
+            try:
+                outcomes.append(fit_curves(points, family=family, samples=2, **{snake(option): value}).points)
+            except ValueError as e:
+                outcomes.append(str(e))
+        same = all(isinstance(o, np.ndarray) for o in outcomes) and np.array_equal(*outcomes) or \
+            outcomes[0] == outcomes[1]
+        check(same, "%s: %s=%r is %s=%s" % (family, snake(option), snake(choice), snake(option), number),
+              "" if same else str(outcomes[0])[:200])
+natural, clamped = (fit_curves(points, family="vdps", automatic=False, end_condition=end).points
+                    for end in ("natural", "clamped"))
+check(not np.allclose(natural, clamped), "vdps: end_condition='clamped' changes the ends")
 
 if failures:
     print("\n%d checks FAILED" % len(failures))
