@@ -146,8 +146,9 @@ public:
   ///@{
   /**
    * Ends of open interpolating lines: NATURAL (default; zero curvature and
-   * torsion at the ends; lambda stays Lambda at the two knots next to each
-   * end, which keeps the system well-conditioned at high degrees) or
+   * torsion at the ends; lambda falls as Lambda (5 / k), not (5 / k)^3, at
+   * the two knots next to each end, which keeps the system well-conditioned
+   * at high degrees) or
    * CLAMPED (the first and last three de Boor points coincide, so the ends
    * depend on the end points only). Approximations are always clamped.
    */

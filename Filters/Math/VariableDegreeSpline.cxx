@@ -490,8 +490,8 @@ double raisedDegree(double degree, double maxDegree)
 
 namespace
 {
-/// The parameters of the options for the given degrees; naturalEnds keeps
-/// Lambda at the two knots next to each end (see VariableDegreeOptions).
+/// The parameters of the options for the given degrees; naturalEnds: lambda
+/// falls as 5 / k at the two knots next to each end (see VariableDegreeOptions).
 VariableDegreeParameters parametersFor(
   const std::vector<double>& degrees, const VariableDegreeOptions& options, bool naturalEnds)
 {
@@ -500,8 +500,8 @@ VariableDegreeParameters parametersFor(
   for (int i = 0; i < knots; ++i)
   {
     const bool end = naturalEnds && (i < 2 || i >= knots - 2);
-    p.Lambda[i] = options.ScaleLambdaWithDegree && !end
-      ? options.Lambda * std::pow(LowestVariableDegree / degrees[i], 3)
+    p.Lambda[i] = options.ScaleLambdaWithDegree
+      ? options.Lambda * std::pow(LowestVariableDegree / degrees[i], end ? 1 : 3)
       : options.Lambda;
   }
   return p;
