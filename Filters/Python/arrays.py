@@ -89,6 +89,8 @@ def _configure(spline, options):
             choices = {re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", m[len(prefix):]).lower(): m
                        for m in dir(spline) if m.startswith(prefix) and m[len(prefix):][:1].isupper()}
             wanted = [m for choice, m in choices.items() if _letters(choice) == _letters(value)]
+            if not choices and getattr(spline, "Set" + name, None) is None:
+                raise ValueError("%s has no option %s" % (spline.GetClassName(), key))
             if not wanted:
                 raise ValueError("%s: %s=%r must be one of %s" % (spline.GetClassName(), key, value,
                                                                    ", ".join(sorted(choices)) or "(none)"))

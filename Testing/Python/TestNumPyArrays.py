@@ -114,6 +114,8 @@ for call, fragment, what in [(lambda: fit_curves(nan_points), "not finite", "NaN
                              (lambda: fit_curves(points, end_condition="free"), "must be one of clamped, natural, not_a_knot",
                               "bad option value"),
                              (lambda: fit_curves(points, tension=2), "no option tension", "unknown option"),
+                             (lambda: fit_curves(points, kind="exponential"), "no option kind",
+                              "unknown option with a choice"),
                              (lambda: fit_curves(points, family="gencubic", automatic=True, automatic_tension=True),
                               "automatic_tension is the old name of automatic", "switch given twice")]:
     try:
