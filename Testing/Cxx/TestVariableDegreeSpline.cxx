@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <random>
 
 using namespace shapesplines;
@@ -69,6 +70,26 @@ double largestJump(const Curve& curve, int order)
     worst = std::max(worst, relativeJump(left[order], right[order]));
   }
   return worst;
+}
+
+/// The largest distance of the given spans from their chords between the
+/// points, at 31 inner samples a span.
+double largestChordDistance(
+  const Curve& curve, const std::vector<Vec3>& points, const std::vector<int>& spans)
+{
+  const std::vector<double>& knots = curve.knots();
+  double distance = 0.0;
+  for (const int j : spans)
+  {
+    for (int s = 1; s < 32; ++s)
+    {
+      const double f = s / 32.0;
+      const Vec3 chord = (1 - f) * points[j] + f * points[j + 1];
+      const double t = knots[j] + f * (knots[j + 1] - knots[j]);
+      distance = std::max(distance, (curve.evaluateOnSpan(j, t, 0)[0] - chord).norm());
+    }
+  }
+  return distance;
 }
 
 FittedPolyline Fit(const std::vector<Vec3>& points, const VariableDegreeOptions& options)
@@ -330,18 +351,8 @@ TEST(VariableDegreeSpline, NaturalEndsNeedTensionAtTheEndKnots)
   EXPECT_LT(fit.Spline->conditionEstimate(), 2e3);
   auto endDistance = [&](const Curve& curve) {
     const int spans = curve.numberOfSpans();
-    double distance = 0.0;
-    for (const int j : { 0, 1, spans - 2, spans - 1 })
-    {
-      for (int s = 1; s < 32; ++s)
-      {
-        const double f = s / 32.0;
-        const double t = curve.knots()[j] + f * (curve.knots()[j + 1] - curve.knots()[j]);
-        const Vec3 chord = (1 - f) * fit.Data.Points[j] + f * fit.Data.Points[j + 1];
-        distance = std::max(distance, (curve.evaluateOnSpan(j, t, 0)[0] - chord).norm());
-      }
-    }
-    return distance / boundingBoxDiagonal(fit.Data.Points);
+    return largestChordDistance(curve, fit.Data.Points, { 0, 1, spans - 2, spans - 1 }) /
+      boundingBoxDiagonal(fit.Data.Points);
   };
   const double atDegree200 = endDistance(*fit.Spline);
   const double atDegree5 = endDistance(*Fit(points, Options(false, 5.0)).Spline);
@@ -364,17 +375,9 @@ TEST(VariableDegreeSpline, GrowingDegreesTendToThePolygon)
     // The builder's default tension law, lambda = (5 / k)^3.
     VariableDegreeParameters p = uniformParameters(points.size(), k, std::pow(5.0 / k, 3));
     const auto spline = VariableDegreeSpline::interpolate(points, knots, false, p);
-    double distance = 0.0;
-    for (int j = 0; j < spline.numberOfSpans(); ++j)
-    {
-      for (int s = 1; s < 32; ++s)
-      {
-        const double f = s / 32.0;
-        const Vec3 chord = (1 - f) * points[j] + f * points[j + 1];
-        const double t = knots[j] + f * (knots[j + 1] - knots[j]);
-        distance = std::max(distance, (spline.evaluateOnSpan(j, t, 0)[0] - chord).norm());
-      }
-    }
+    std::vector<int> spans(spline.numberOfSpans());
+    std::iota(spans.begin(), spans.end(), 0);
+    const double distance = largestChordDistance(spline, points, spans);
     std::printf("degree %g: largest distance to the polygon %.3g of the diameter\n", k,
       distance / diameter);
     if (k == 10.0 || k > 21.0)

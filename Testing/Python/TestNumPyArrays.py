@@ -236,13 +236,16 @@ raises(lambda: fit_curves([points, points], point_data={"r": [radius, pair]}),
 
 # Every choice a filter names (Set<Option>To<Choice>) is a string argument,
 # in snake case, and does what the number does.
+def snake(name):
+    return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
+
+
 for family, class_name in sorted(FAMILIES.items()):
     spline = getattr(shapesplines, class_name)()
     for method in sorted(m for m in dir(spline) if re.fullmatch(r"Set[A-Za-z]+To[A-Z][A-Za-z0-9]*", m)):
         option, choice = re.fullmatch(r"Set([A-Za-z]+?)To([A-Z][A-Za-z0-9]*)", method).groups()
         if not hasattr(spline, "Get%sMinValue" % option):
             continue  # not an option with named choices (SetInputArrayToProcess)
-        snake = lambda name: re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", name).lower()
         getattr(spline, method)()
         number = getattr(spline, "Get" + option)()
         outcomes = []
