@@ -552,6 +552,15 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
     vtkWarningWithObjectMacro(self, "Line (" << line.Name
                                     << ") interpolated, not approximated: too few points for an approximation.");
   }
+  if (fit.Spline && fit.StarvedSpan)
+  {
+    vtkWarningWithObjectMacro(self, "Line (" << line.Name
+                                    << "): its knots leave a span with too few points to decide it "
+                                    << "(unevenly spaced points): the curve there follows its "
+                                    << "neighbours, the points' parameters are not corrected and "
+                                    << "NoiseLevel is not estimated (0). Fewer knots, or Number Of "
+                                    << "Knots 0 (chosen per line), avoid it.");
+  }
   if (fit.Spline && fit.Spline->conditionEstimate() > shapesplines::UntrustedCondition)
   {
     vtkWarningWithObjectMacro(self, "Line (" << line.Name

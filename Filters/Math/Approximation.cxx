@@ -535,6 +535,7 @@ ScoredPlan planFrom(const std::vector<Vec3>& points, const std::vector<double>& 
   scored.Plan.Knots = chosen;
   scored.Plan.Parameters = std::isfinite(fit.Residual) ? fit.Parameters : u;
   scored.Plan.NoiseLevel = std::isfinite(fit.Residual) ? std::sqrt(fit.Residual / count) : 0.0;
+  scored.Plan.StarvedSpan = !std::isfinite(fit.Residual);
   scored.Score = gcvScore(fit.Residual, count, chosen, closed);
   return scored;
 }

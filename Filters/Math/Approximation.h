@@ -102,6 +102,11 @@ struct ApproximationPlan
   /// least squares on those knots and parameters: the noise of the points,
   /// as far as the fit can tell.
   double NoiseLevel = 0.0;
+  /// The count's knots leave a span with no points, or too few to decide it
+  /// (uneven spacing), so that the classical least squares is singular: the
+  /// parameters are the given ones and NoiseLevel 0 (not estimated). Only a
+  /// requested count, or every count cross-validation tried, can be one.
+  bool StarvedSpan = false;
 };
 
 /**

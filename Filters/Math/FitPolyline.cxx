@@ -581,6 +581,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
     fit.Knots = std::move(*built.DataParameters);
   }
   fit.NoiseLevel = built.NoiseLevel * fit.Scale;
+  fit.StarvedSpan = built.StarvedSpan;
   fit.LooksNoisy = !fit.ShapeReference && looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
   fit.Shape = discreteShape(reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise);

@@ -72,6 +72,9 @@ struct BuiltCurve
   /// move with that noise (see discreteShape).
   double NoiseLevel = 0.0;
   std::vector<double> ReferenceNoise;
+  /// Approximations: a span of the knots holds too few points to decide it
+  /// (ApproximationPlan::StarvedSpan): NoiseLevel is not estimated.
+  bool StarvedSpan = false;
 };
 
 using CurveBuilder = std::function<BuiltCurve(const FitContext& context)>;
@@ -104,6 +107,8 @@ struct FittedPolyline
   ShapeAudit Audit;    ///< against that shape
   /// Approximations: the points' root-mean-square distance from the curve, data units.
   double NoiseLevel = 0.0;
+  /// Approximations: a span of the knots holds too few points to decide it (BuiltCurve::StarvedSpan).
+  bool StarvedSpan = false;
   /// Interpolations: the points look noisy to a least squares (looksNoisy):
   /// the curve's curvature and torsion follow the noise.
   bool LooksNoisy = false;

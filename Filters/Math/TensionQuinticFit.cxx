@@ -115,6 +115,7 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
         built.ShapeReference = std::move(reference);
         built.DataParameters = plan.Parameters;
         built.NoiseLevel = plan.NoiseLevel;
+        built.StarvedSpan = plan.StarvedSpan;
         built.ReferenceNoise = std::move(fitted.VertexNoise);
         return built;
       });

@@ -591,6 +591,7 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   built.ShapeReference = std::move(psi.Polygon);
   built.DataParameters = plan.Parameters;
   built.NoiseLevel = plan.NoiseLevel;
+  built.StarvedSpan = plan.StarvedSpan;
   built.ReferenceNoise = std::move(psi.VertexNoise);
   return built;
 }

@@ -315,6 +315,37 @@ TEST(Approximation, EveryFewKnotCountHasAFitOnDenseNoisyPoints)
   }
 }
 
+TEST(Approximation, KnotsThatLeaveASpanWithoutPointsAreReported)
+{
+  // Two turns of a helix with a turn missing between them: chord lengths put
+  // the gap at a tenth of the parameter range, so 20 uniform knots leave a
+  // span in it without points. The requested count is kept (the user's
+  // choice), its plan says the span is starved and estimates no noise;
+  // cross-validation never picks such a count.
+  std::vector<Vec3> points = randomlySampled(helixAt, 0.0, 2 * Pi, 40, 0.002, 11);
+  for (const Vec3& p : randomlySampled(helixAt, 4 * Pi, 6 * Pi, 40, 0.002, 12))
+  {
+    points.push_back(p);
+  }
+  CleanPolyline data;
+  data.Points = points;
+  const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
+  const ApproximationPlan starved = planApproximation(points, u, 40, false, 20, true);
+  EXPECT_EQ(starved.Knots, 20);
+  EXPECT_TRUE(starved.StarvedSpan);
+  EXPECT_EQ(starved.NoiseLevel, 0.0);
+  EXPECT_EQ(starved.Parameters, u);
+  const ApproximationPlan fewer = planApproximation(points, u, 40, false, 6, true);
+  EXPECT_FALSE(fewer.StarvedSpan);
+  EXPECT_GT(fewer.NoiseLevel, 0.0);
+  const ApproximationPlan chosen = planApproximation(points, u, 40, false, CrossValidatedKnots, true);
+  EXPECT_FALSE(chosen.StarvedSpan);
+  EXPECT_GT(chosen.NoiseLevel, 0.0);
+  // The fit carries the plan's verdict to the filter's warning.
+  EXPECT_TRUE(approximate(points, 20, true).StarvedSpan);
+  EXPECT_FALSE(approximate(points, CrossValidatedKnots, true).StarvedSpan);
+}
+
 namespace
 {
 /// The fewest of the points (parameters u) that a span of `knots` uniform knots holds.

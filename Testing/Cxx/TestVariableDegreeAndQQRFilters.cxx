@@ -284,6 +284,44 @@ TEST(ApproximatingFilters, ApproximateClosedLinesAndReportShortOnesTheyInterpola
   EXPECT_EQ(tooShort.Output->GetNumberOfPoints(), 4 * 10 + 1);
 }
 
+TEST(ApproximationFilters, KnotsThatLeaveASpanWithoutPointsAreWarnedAbout)
+{
+  // A helix with a turn missing: 20 knots uniform in chord length leave a
+  // span in the gap without points; both approximating families keep the
+  // count asked for and say so, once; chosen per line (0), no warning.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  Polyline points;
+  for (int i = 0; i < 80; ++i)
+  {
+    const double t = 2.0 * Pi * (i < 40 ? i / 39.0 : 2.0 + (i - 40) / 39.0);
+    points.push_back({ std::cos(t) + noise(rng), std::sin(t) + noise(rng), 0.25 * t + noise(rng) });
+  }
+  const auto input = PolylinesData({ points });
+  for (const int knots : { 20, 0 })
+  {
+    const FilterRun quintic = RunFilter<Quintic>(input, [&](Quintic* f) {
+      f->SetModeToApproximate();
+      f->SetNumberOfKnots(knots);
+    });
+    const FilterRun variable = RunFilter<VariableDegree>(input, [&](VariableDegree* f) {
+      f->SetModeToApproximateLocal();
+      f->SetNumberOfKnots(knots);
+    });
+    for (const FilterRun* run : { &quintic, &variable })
+    {
+      EXPECT_EQ(CountMessages(run->Warnings, { "too few points to decide it", "Number Of Knots 0" }),
+        knots > 0 ? 1 : 0)
+        << knots << " knots: " << Joined(run->Warnings);
+      if (knots > 0)
+      {
+        EXPECT_EQ(CellArray(run->Output, "NumberOfKnots")->GetTuple1(0), knots);
+      }
+      EXPECT_EQ(CellArray(run->Output, "NoiseLevel")->GetTuple1(0) > 0.0, knots == 0);
+    }
+  }
+}
+
 TEST(VariableDegreeSplineFilter, SettingsTheAutomaticModeCannotUseAreReported)
 {
   const auto data = ReadData("helix.vtp");
