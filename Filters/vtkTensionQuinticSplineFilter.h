@@ -96,7 +96,8 @@ public:
    * corrected towards the curve, the fewest within half a standard error of
    * the best score (CorrectParameters); lines that this smooths are
    * planned again on parameters weighted by a first fit's curvature, and
-   * the better-scoring plan kept. At most half the points and
+   * the better-scoring plan kept (the one with fewer knots where both score
+   * within half a standard error of the better's best). At most half the points and
    * points - 4 (lines of fewer than 6 points are interpolated).
    */
   vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);

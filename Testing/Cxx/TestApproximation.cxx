@@ -35,6 +35,13 @@ Vec3 helixAt(double t)
   return Vec3(std::cos(t), std::sin(t), 0.25 * t);
 }
 
+/// The middle value (the upper one of an even count).
+double median(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
 /// Median relative curvature error on the middle half of a fit of a helix a = 1, b = 0.25.
 double medianCurvatureError(const FittedPolyline& fit)
 {
@@ -50,8 +57,7 @@ double medianCurvatureError(const FittedPolyline& fit)
       errors.push_back(std::abs(sampled.Frames[k].Curvature - truth) / truth);
     }
   }
-  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-  return errors[errors.size() / 2];
+  return median(std::move(errors));
 }
 
 FittedPolyline approximate(const std::vector<Vec3>& points, int knots, bool correct)
@@ -113,8 +119,12 @@ TEST(Approximation, CorrectedParametersKeepTheNoiseOutOfTheCurvature)
   // A helix sampled at random places with noise about as large as the
   // spacing: chord lengths are then mostly noise. With the parameters
   // corrected towards the curve, the median curvature error on the middle
-  // half is a fraction of what the chord lengths give.
-  for (const unsigned seed : { 3u, 4u, 5u })
+  // half is small on every seed and, over the seeds, a fraction of what the
+  // chord lengths give (their cross-validation lands a good count now and
+  // then: seeds 4 and 8 take 7 and 10 knots, 3.4% and 2%; the others 24-57,
+  // 12-71%).
+  std::vector<double> correctedErrors, chordErrors;
+  for (const unsigned seed : { 3u, 4u, 5u, 6u, 7u, 8u, 9u, 10u })
   {
     const std::vector<Vec3> points = randomlySampled(helixAt, 0.0, 4 * Pi, 400, 0.02, seed);
     const FittedPolyline corrected = approximate(points, CrossValidatedKnots, true);
@@ -124,11 +134,13 @@ TEST(Approximation, CorrectedParametersKeepTheNoiseOutOfTheCurvature)
                 "knots, %.3f\n",
       seed, corrected.Spline->numberOfSpans() + 1, a, chords.Spline->numberOfSpans() + 1, b);
     EXPECT_LT(a, 0.1);
-    EXPECT_LT(a, 0.5 * b);
+    correctedErrors.push_back(a);
+    chordErrors.push_back(b);
     // The noise level the fit reports: the points' distance from the curve,
     // about sqrt(2) times the noise per coordinate.
     EXPECT_NEAR(corrected.NoiseLevel, std::sqrt(2.0) * 0.02, 0.008);
   }
+  EXPECT_LT(median(correctedErrors), 0.25 * median(chordErrors));
 }
 
 TEST(Approximation, TheCountTakenLeavesTheNoiseOut)
@@ -443,8 +455,7 @@ double medianSpiralTorsionError(const FittedPolyline& fit)
     const double torsion = cross.dot(d[2]) / cross.squaredNorm();
     errors.push_back(std::abs(sampled.Frames[k].Torsion - torsion) / torsion);
   }
-  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-  return errors[errors.size() / 2];
+  return median(std::move(errors));
 }
 } // namespace
 
@@ -519,8 +530,7 @@ double medianTrefoilTorsionError(const FittedPolyline& fit)
       errors.push_back(std::abs(sampled.Frames[k].Torsion - torsion[nearest]) / std::abs(torsion[nearest]));
     }
   }
-  std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
-  return errors[errors.size() / 2];
+  return median(std::move(errors));
 }
 } // namespace
 
