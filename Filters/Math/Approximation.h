@@ -123,13 +123,15 @@ struct ApproximationPlan
  * torsion are second and third derivatives, which the last few knots a
  * position-based score accepts only make noisier (after Breiman's
  * one-standard-error rule; a whole standard error let bias into coarse
- * helices, none let noise into the torsion of randomly sampled trefoils). Counts whose fit is singular (a span without points) are not
- * candidates. Lines that are smoothed (three points or more a knot)
- * are planned a second time from parameters warped by the first plan's
- * curvature, so that uniform knots gather where the curve bends; the plan
- * with the lower score is taken, or where both score within half a
- * standard error of the better one's best count, the one with fewer knots. requestedKnots: a count to use (clamped to [lowest, highest])
- * instead of choosing one; correctParameters false keeps u. Progress is
+ * helices, none let noise into the torsion of randomly sampled trefoils).
+ * Counts whose fit is singular (a span without points) are not candidates.
+ * Lines that are smoothed (three points or more a knot) are planned a
+ * second time from parameters warped by the first plan's curvature, so
+ * that uniform knots gather where the curve bends; the plan with the lower
+ * score is taken, or, where both score within half a standard error of the
+ * better one's best count, the one with fewer knots. requestedKnots: a
+ * count to use (clamped to [lowest, highest]) instead of choosing one;
+ * correctParameters false keeps u. Progress is
  * reported after every count fitted (a million points take tens of seconds
  * in all); FitAborted when it asks to stop.
  */
