@@ -21,8 +21,8 @@
  * interpolated with a warning) fit NumberOfKnots knots (0, the default:
  * chosen per line by cross-validation) uniform in the parameters (on
  * lines it smooths, weighted by the curvature of a first fit where that
- * scores better, or as well with fewer knots), which CorrectParameters moves to where each point sits on the curve, in least
- * squares, and keep the shape of psi, the best piecewise linear
+ * scores better, or as well with fewer knots), which CorrectParameters
+ * moves to where each point sits on the curve, in least squares, and keep the shape of psi, the best piecewise linear
  * least-squares fit, where it stands out of the noise (changing the
  * curvature by at most 2x): GLOBAL raises every degree together, LOCAL
  * raises degrees and pulls the curve towards psi (weighted least squares)

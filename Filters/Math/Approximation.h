@@ -163,8 +163,9 @@ inline bool approximates(int requested, bool closed, int highest)
 }
 
 /**
- * An approximating family's fit(plan, knots): planApproximation's plan (the
- * parameters corrected when correctParameters) and count, the requested one
+ * An approximating family's fit(plan, knots), with what the plan found
+ * (BuiltCurve::DataParameters, NoiseLevel, StarvedSpan): planApproximation's
+ * plan (the parameters corrected when correctParameters) and count, the requested one
  * clamped to [lowestKnotCount(closed), highest] or for CrossValidatedKnots
  * the chosen one, and then 10% fewer while fit throws (a singular system: a
  * gap in the data leaves a span without points where the family's knots
@@ -173,9 +174,9 @@ inline bool approximates(int requested, bool closed, int highest)
  * approximated (approximates() false): the family interpolates.
  */
 template <class Fit>
-auto approximateWithPlan(const std::vector<Vec3>& points, const std::vector<double>& u,
-  int requested, bool closed, int highest, bool correctParameters, const ProgressCallback& progress,
-  const Fit& fit) -> std::optional<decltype(fit(std::declval<const ApproximationPlan&>(), highest))>
+std::optional<BuiltCurve> approximateWithPlan(const std::vector<Vec3>& points,
+  const std::vector<double>& u, int requested, bool closed, int highest, bool correctParameters,
+  const ProgressCallback& progress, const Fit& fit)
 {
   if (!approximates(requested, closed, highest))
   {
@@ -188,7 +189,11 @@ auto approximateWithPlan(const std::vector<Vec3>& points, const std::vector<doub
   {
     try
     {
-      return fit(plan, knots);
+      BuiltCurve built = fit(plan, knots);
+      built.DataParameters = plan.Parameters;
+      built.NoiseLevel = plan.NoiseLevel;
+      built.StarvedSpan = plan.StarvedSpan;
+      return built;
     }
     catch (const FitAborted&)
     {

@@ -113,9 +113,6 @@ CurveBuilder tensionQuinticBuilder(const QuinticFitOptions& quintic)
         reference.Points = std::move(fitted.Polygon);
         reference.Closed = closed;
         built.ShapeReference = std::move(reference);
-        built.DataParameters = plan.Parameters;
-        built.NoiseLevel = plan.NoiseLevel;
-        built.StarvedSpan = plan.StarvedSpan;
         built.ReferenceNoise = std::move(fitted.VertexNoise);
         return built;
       });

@@ -589,9 +589,6 @@ BuiltCurve approximateData(const FitContext& context, const VariableDegreeOption
   };
   BuiltCurve built = fixedOrAutomatic(options.Automatic, context, psi.Polygon, ladder);
   built.ShapeReference = std::move(psi.Polygon);
-  built.DataParameters = plan.Parameters;
-  built.NoiseLevel = plan.NoiseLevel;
-  built.StarvedSpan = plan.StarvedSpan;
   built.ReferenceNoise = std::move(psi.VertexNoise);
   return built;
 }
