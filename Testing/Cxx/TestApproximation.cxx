@@ -266,14 +266,16 @@ TEST(Approximation, OpenLinesAreExtendedByMirroredPoints)
   EXPECT_LT((data.Points[0] - (2.0 * points[0] - points[2])).norm(), 1e-15);
   EXPECT_DOUBLE_EQ(data.Knots.front(), -0.1);
   EXPECT_DOUBLE_EQ(data.Parameters.back(), u.back() + 0.1);
-  // A cluster of repeated points at an end: the mirror reaches past it.
+  // A cluster of repeated points at an end: not mirrored (a point off the
+  // end at the end's parameter would make a kink); the mirror reaches past it.
   std::vector<Vec3> crowded = points;
   std::vector<double> v = u;
   crowded.insert(crowded.begin() + 1, 2, points[0] + Vec3(1e-4, 0, 0));
   v.insert(v.begin() + 1, { 1e-4, 2e-4 });
   const ExtendedData crowdedData = extendForApproximation(crowded, v, 5, false);
-  EXPECT_GT(crowdedData.Points.size(), crowded.size() + 4);
-  EXPECT_LT(crowdedData.Parameters.front(), -0.04);
+  EXPECT_EQ(crowdedData.Points.size(), crowded.size() + 4);
+  EXPECT_LT(crowdedData.Parameters[1], -0.04);
+  EXPECT_LT(crowdedData.Parameters.front(), -0.09);
   u.push_back(3.0);
   const ExtendedData closed = extendForApproximation(points, u, 5, true);
   EXPECT_EQ(closed.Points.size(), points.size());
@@ -283,8 +285,8 @@ TEST(Approximation, OpenLinesAreExtendedByMirroredPoints)
 
 TEST(Approximation, ParametersGatheredAtAnEndStillExtendIt)
 {
-  // Corrected parameters of noisy points gather at an end (a point that
-  // projects before the first is kept at the end): the mirror reaches one
+  // Corrected parameters of noisy points gather at an end (points that
+  // project out of order share a parameter): the mirror reaches one
   // mean spacing past it, with two points beyond the end, so the span beyond
   // has a length and the fit a solution.
   std::vector<Vec3> points;
@@ -303,7 +305,50 @@ TEST(Approximation, ParametersGatheredAtAnEndStillExtendIt)
   EXPECT_GE(data.Knots.back(), u.back() + spacing);
   EXPECT_GE(std::count_if(data.Parameters.begin(), data.Parameters.end(), [&](double v) { return v < u.front(); }), 2);
   EXPECT_GE(std::count_if(data.Parameters.begin(), data.Parameters.end(), [&](double v) { return v > u.back(); }), 2);
+  // None mirrored at the end's own parameter, where it would make a kink.
+  EXPECT_EQ(std::count(data.Parameters.begin(), data.Parameters.end(), u.front()), 3);
+  EXPECT_EQ(std::count(data.Parameters.begin(), data.Parameters.end(), u.back()), 2);
   EXPECT_TRUE(QuinticFit::solve(data.Points, data.Parameters, data.Knots, false).has_value());
+}
+
+TEST(Approximation, TheCurveEndsAtItsEndPoints)
+{
+  // 400 points at random places on Viviani's curve, noise about the spacing.
+  // The end points' parameters are corrected like the others': kept at the
+  // ends while the fit moved, the first one's projection crept inwards round
+  // after round, the points after it were pushed along (their order kept),
+  // and the fit ran on past the end points by up to 3.8 times the noise
+  // (length 1.2-1.7% off on 3 of these 10 seeds); now within 1.2 and 0.9%.
+  auto viviani = [](double t) {
+    return Vec3(1.0 + std::cos(t), std::sin(t), 2.0 * std::sin(0.5 * t));
+  };
+  const double sigma = 0.0245;
+  for (unsigned seed = 3; seed <= 12; ++seed)
+  {
+    const std::vector<double> t = randomParameters(400, -0.95 * Pi, 0.95 * Pi, seed);
+    std::vector<Vec3> exact;
+    double length = 0.0;
+    for (size_t j = 0; j < t.size(); ++j)
+    {
+      exact.push_back(viviani(t[j]));
+      // The true length between the first and last sample, by fine chords.
+      constexpr int Steps = 64;
+      for (int k = 0; j > 0 && k < Steps; ++k)
+      {
+        const double a = t[j - 1] + (t[j] - t[j - 1]) * k / Steps;
+        length += (viviani(a + (t[j] - t[j - 1]) / Steps) - viviani(a)).norm();
+      }
+    }
+    const std::vector<Vec3> points = withNoise(exact, sigma, seed + 1);
+    const FittedPolyline fit = approximate(points, CrossValidatedKnots, true);
+    const SampledCurve sampled = sampleFit(fit);
+    const int last = sampled.Samples.size() - 1;
+    const double startOffset = (sampled.Samples.Values[0][0] - points.front()).dot(sampled.Frames[0].Tangent);
+    const double endOffset = (sampled.Samples.Values[last][0] - points.back()).dot(sampled.Frames[last].Tangent);
+    EXPECT_LT(std::abs(startOffset), 2.0 * sigma) << "seed " << seed;
+    EXPECT_LT(std::abs(endOffset), 2.0 * sigma) << "seed " << seed;
+    EXPECT_NEAR(sampled.Samples.Length / length, 1.0, 0.01) << "seed " << seed;
+  }
 }
 
 TEST(Approximation, EveryFewKnotCountHasAFitOnDenseNoisyPoints)
