@@ -179,8 +179,10 @@ private:
   }
 
   /// The largest factor between span j's curvature and the level-0 curve's
-  /// at the same samples, where the latter stands above the noise (see
-  /// ShapeBounds::CurvatureChange); 1 when that bound is off.
+  /// at the same samples (see ShapeBounds::CurvatureChange): below it where
+  /// the latter stands above the noise, above the larger of it and the
+  /// noise's curvature anywhere (a kink on a straighter stretch); 1 when
+  /// that bound is off.
   double curvatureChange(int j) const
   {
     const std::vector<double>& vertexNoise = this->Ladder.ReferenceNoise;
@@ -200,8 +202,9 @@ private:
     {
       if (start[k] > noise)
       {
-        change = std::max({ change, start[k] / std::max(now[k], 1e-300), now[k] / start[k] });
+        change = std::max(change, start[k] / std::max(now[k], 1e-300));
       }
+      change = std::max(change, now[k] / std::max({ start[k], noise, 1e-300 }));
     }
     return change;
   }

@@ -35,8 +35,9 @@ struct ShapeBounds
   /// this factor of the level-0 curve's, wherever that stands above what the
   /// reference's noise can bend (NoiseSignificance times the curvature of an
   /// arc whose sagitta over the span's segment is the larger
-  /// ShapeLadder::ReferenceNoise of its vertices): keeping a noisy polygon's
-  /// shape must not flatten the curve.
+  /// ShapeLadder::ReferenceNoise of its vertices), and below this factor
+  /// times that noise's curvature where the level-0 curve's is lower:
+  /// keeping a noisy polygon's shape must neither flatten nor kink the curve.
   double CurvatureChange = 0.0;
 };
 
