@@ -557,23 +557,25 @@ ScoredPlan planFrom(const std::vector<Vec3>& points, const std::vector<double>& 
       }
       return best;
     };
-    // Smoothing (the best count takes three points or more a knot): no count
-    // with a span of fewer than three points. Points at random places leave
-    // a few spans with one or two, where the third derivative, the torsion,
-    // follows their noise, which a score of positions hardly sees. Counts
-    // that all but interpolate keep such spans: a clean helix at 8 points a
-    // turn needs two points a span.
-    if (count >= SmoothingSpanPoints * bestScore().first)
+    // No count with a span of a single point: a span holding one point is
+    // free to bulge wherever the points leave a gap (60 noisy points of a
+    // trefoil with gaps of 5 mean spacings: 24 knots, the fit 125 times the
+    // noise off the curve in a gap, torsion error 117%), and a score of the
+    // points' positions cannot see it. Smoothing (the best count takes
+    // three points or more a knot): none with a span of fewer than three.
+    // Points at random places leave a few spans with one or two, where the
+    // third derivative, the torsion, follows their noise. Counts that all
+    // but interpolate keep spans of two: a clean helix at 8 points a turn
+    // needs them.
+    const int fewest = count >= SmoothingSpanPoints * bestScore().first ? SmoothingSpanPoints : 2;
+    for (auto& [knots, score] : scores)
     {
-      for (auto& [knots, score] : scores)
+      const CorrectedFit& fit = fitted(knots);
+      if (std::isfinite(score) &&
+        fewestHeld(uniformKnots(fit.Parameters, closed ? knots + 1 : knots), fit.Parameters,
+          points.size()) < fewest)
       {
-        const CorrectedFit& fit = fitted(knots);
-        if (std::isfinite(score) &&
-          fewestHeld(uniformKnots(fit.Parameters, closed ? knots + 1 : knots), fit.Parameters,
-            points.size()) < SmoothingSpanPoints)
-        {
-          score = std::numeric_limits<double>::infinity();
-        }
+        score = std::numeric_limits<double>::infinity();
       }
     }
     best = bestScore().second;

@@ -124,7 +124,10 @@ struct ApproximationPlan
  * position-based score accepts only make noisier (after Breiman's
  * one-standard-error rule; a whole standard error let bias into coarse
  * helices, none let noise into the torsion of randomly sampled trefoils).
- * Counts whose fit is singular (a span without points) are not candidates.
+ * Counts whose fit is singular (a span without points) are not candidates,
+ * nor counts leaving a span with a single point (free to bulge into a gap),
+ * or, smoothing (the best count takes three points or more a knot), with
+ * fewer than three.
  * Lines that are smoothed (three points or more a knot) are planned a
  * second time from parameters warped by the first plan's curvature, so
  * that uniform knots gather where the curve bends; the plan with the lower
