@@ -417,6 +417,19 @@ int fewestPointsInASpan(const std::vector<double>& u, int knots)
   }
   return *std::min_element(held.begin(), held.end());
 }
+
+/// The plan for 60 points at random places on a trefoil knot, with noise.
+ApproximationPlan randomTrefoilPlan(double noise, unsigned seed)
+{
+  const auto trefoilAt = [](double t) {
+    return Vec3(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t));
+  };
+  const std::vector<Vec3> points = randomlySampled(trefoilAt, 0.0, 2 * Pi * 0.999, 60, noise, seed);
+  CleanPolyline data;
+  data.Points = points;
+  const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
+  return planApproximation(points, u, 30, false, CrossValidatedKnots, true);
+}
 } // namespace
 
 TEST(Approximation, SmoothingLeavesNoSpanWithFewerThanThreePoints)
@@ -425,17 +438,10 @@ TEST(Approximation, SmoothingLeavesNoSpanWithFewerThanThreePoints)
   // three points or more in every span (one or two let the torsion follow
   // their noise). Clean coarse points (8 a turn, evenly spaced) keep the
   // count that all but interpolates them, with two points a span.
-  const auto trefoilAt = [](double t) {
-    return Vec3(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t));
-  };
   int fewest = 1000;
   for (unsigned seed = 1; seed <= 8; ++seed)
   {
-    const std::vector<Vec3> points = randomlySampled(trefoilAt, 0.0, 2 * Pi * 0.999, 60, 0.03, seed);
-    CleanPolyline data;
-    data.Points = points;
-    const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
-    const ApproximationPlan plan = planApproximation(points, u, 30, false, CrossValidatedKnots, true);
+    const ApproximationPlan plan = randomTrefoilPlan(0.03, seed);
     fewest = std::min(fewest, fewestPointsInASpan(plan.Parameters, plan.Knots));
     EXPECT_GE(fewestPointsInASpan(plan.Parameters, plan.Knots), 3) << "seed " << seed << ", " << plan.Knots << " knots";
   }
@@ -454,16 +460,9 @@ TEST(Approximation, NoSpanOfASinglePoint)
   // where the points leave a gap, a count close to interpolating them put a
   // knot or two in it, each span there holding a single point, free to
   // bulge (seeds 7 and 33 took 23 and 21 knots that way; now 14 and 13).
-  const auto trefoilAt = [](double t) {
-    return Vec3(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t));
-  };
   for (unsigned seed = 1; seed <= 40; ++seed)
   {
-    const std::vector<Vec3> points = randomlySampled(trefoilAt, 0.0, 2 * Pi * 0.999, 60, 0.0087, seed);
-    CleanPolyline data;
-    data.Points = points;
-    const std::vector<double> u = computeKnots(data, Parameterization::ChordLength);
-    const ApproximationPlan plan = planApproximation(points, u, 30, false, CrossValidatedKnots, true);
+    const ApproximationPlan plan = randomTrefoilPlan(0.0087, seed);
     EXPECT_GE(fewestPointsInASpan(plan.Parameters, plan.Knots), 2) << "seed " << seed << ", " << plan.Knots << " knots";
   }
 }
