@@ -95,7 +95,8 @@ std::vector<int> extendedLevels(const std::vector<int>& levels, int extra);
 struct ApproximationPlan
 {
   /// Per point: its parameter, the given one or corrected towards the curve
-  /// (the ends kept, the order kept).
+  /// (each point where it projects on the fit, an open line's ends too; the
+  /// points' order kept).
   std::vector<double> Parameters;
   int Knots = 0; ///< the knot count (distinct knots of a closed line)
   /// The points' root-mean-square distance from the classical quintic
