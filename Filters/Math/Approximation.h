@@ -167,6 +167,49 @@ inline bool approximates(int requested, bool closed, int highest)
 }
 
 /**
+ * Of built (knots knots) and the fits with up to two knots more or fewer
+ * (within [lowest, highest]), the one whose automatic shape mode left the
+ * fewest violations, the nearest count first on ties. The violations an
+ * approximation keeps come and go with the count (the shipped aorta's
+ * lines keep 0 to 4 over 26-39 knots, where the reference polygon's
+ * vertices near an end turn within their noise), while the scores of
+ * neighbouring counts differ little.
+ */
+template <class Fit>
+BuiltCurve fewestViolations(BuiltCurve built, int knots, int lowest, int highest, const Fit& fit,
+  const ApproximationPlan& plan)
+{
+  for (const int other : { knots + 1, knots - 1, knots + 2, knots - 2 })
+  {
+    if (other < lowest || other > highest)
+    {
+      continue;
+    }
+    try
+    {
+      BuiltCurve candidate = fit(plan, other);
+      if (candidate.Audit && candidate.Audit->violations() < built.Audit->violations())
+      {
+        built = std::move(candidate);
+      }
+    }
+    catch (const FitAborted&)
+    {
+      throw; // the user stopped the work
+    }
+    catch (const std::exception&)
+    {
+      // a singular fit (a span without points): not a candidate
+    }
+    if (built.Audit->preserving())
+    {
+      break;
+    }
+  }
+  return built;
+}
+
+/**
  * An approximating family's fit(plan, knots), with what the plan found
  * (BuiltCurve::DataParameters, NoiseLevel, StarvedSpan): planApproximation's
  * plan (the parameters corrected when correctParameters) and count, the requested one
@@ -194,6 +237,10 @@ std::optional<BuiltCurve> approximateWithPlan(const std::vector<Vec3>& points,
     try
     {
       BuiltCurve built = fit(plan, knots);
+      if (requested == CrossValidatedKnots && built.Audit && !built.Audit->preserving())
+      {
+        built = fewestViolations(std::move(built), knots, lowest, highest, fit, plan);
+      }
       built.DataParameters = plan.Parameters;
       built.NoiseLevel = plan.NoiseLevel;
       built.StarvedSpan = plan.StarvedSpan;

@@ -202,8 +202,7 @@ TEST(ApproximatingFilters, TheAortaCenterlineAtTheDefaults)
   // no hook at the ends (before the ends were continued by mirrored points,
   // the least squares' ends followed the last points into curvatures of 12
   // to 16; the data's own end curls by about 100 degrees in its last 2.5
-  // mm), and never more violations of the reference polygon's shape than
-  // the fixed parameters leave.
+  // mm), and no violation of the reference polygon's shape left.
   const auto data = ReadData("aorta-centerline.vtp");
   const FilterRun cubic = RunFilter<vtkCubicSplineFilter>(data);
   const std::vector<std::pair<std::string, std::function<FilterRun(bool)>>> runs = {
@@ -235,10 +234,16 @@ TEST(ApproximatingFilters, TheAortaCenterlineAtTheDefaults)
       Measure("  largest curvature", largest);
       Measure("  knots", CellArray(approximation.Output, "NumberOfKnots")->GetTuple1(c));
       Measure("  noise level", CellArray(approximation.Output, "NoiseLevel")->GetTuple1(c));
+      const double knots = CellArray(approximation.Output, "NumberOfKnots")->GetTuple1(c);
+      const double chosen = CellArray(fixed.Output, "NumberOfKnots")->GetTuple1(c);
       Measure("  violations, fixed then automatic", 1000 * before + after);
       EXPECT_NEAR(length / through, 1.0, 0.01);
       EXPECT_LE(largest, 1.0);
-      EXPECT_LE(after, before);
+      // Violations come and go with the knot count near the curled ends
+      // (line 0 keeps 1 at the cross-validated 34, line 1 2 at 30): the
+      // automatic mode takes a count up to two away that keeps none.
+      EXPECT_EQ(after, 0.0);
+      EXPECT_LE(std::abs(knots - chosen), 2.0);
     }
   }
 }
