@@ -172,8 +172,10 @@ inline bool approximates(int requested, bool closed, int highest)
  * fewest violations, the nearest count first on ties. The violations an
  * approximation keeps come and go with the count (the shipped aorta's
  * lines keep 0 to 4 over 26-39 knots, where the reference polygon's
- * vertices near an end turn within their noise), while the scores of
- * neighbouring counts differ little.
+ * vertices near an end turn within their noise), while cross-validation's
+ * score is bumpy there: on the aorta the counts taken score 3% lower (line
+ * 0, 36 for 34 knots) and the same (line 1, 32 for 30) on uniform knots,
+ * neighbouring counts up to 20% apart.
  */
 template <class Fit>
 BuiltCurve fewestViolations(BuiltCurve built, int knots, int lowest, int highest, const Fit& fit,
