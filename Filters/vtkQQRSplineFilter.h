@@ -25,15 +25,21 @@
  * B-spline curve at the defaults; shape violations are counted against the
  * polygon).
  *
- * With Automatic on (default) the exponents at the knots of the spans where
- * the shape audit (Costantini and Manni, Definition 1) fails are raised,
- * within the bounds of the automatic modes (no cusp, no span far from its
- * data); what the exponents cannot remove is reported. Continuity C2_FC
+ * With Automatic on (default) the spans where the shape audit (Costantini
+ * and Manni, Definition 1) fails are moved towards their chords, step by
+ * step, through the local parameters around them (straightness 1: on the
+ * chord, the joins still C2), and the exponent is raised where a straight
+ * run of the points ends in a turn, within the bounds of the automatic
+ * modes (no cusp, no span far from its data); what that cannot remove is
+ * reported (two neighbouring spans cannot both be straight where the
+ * points turn). Continuity C2_FC
  * (approximation) sets x = y = 0 and alpha = beta >= FrenetOrder + 3: C2 and
  * Frenet frame continuous to order 2 FrenetOrder + 3 (Theorem 13).
  *
- * Output: the contract of vtkShapeSplineFilter, plus the point array Alpha
- * (the larger exponent of each sample's span) and the cell array MaxAlpha.
+ * Output: the contract of vtkShapeSplineFilter, plus the point arrays Alpha
+ * (the larger exponent of each sample's span) and Straightness (how far the
+ * automatic mode moved the span towards its chord, 0 to 1) and the cell
+ * arrays MaxAlpha and MaxStraightness.
  *
  * @sa vtkShapeSplineFilter vtkCubicSplineFilter
  */
@@ -85,9 +91,10 @@ public:
 
   ///@{
   /**
-   * Raise the exponents at the knots of the spans where the shape audit
-   * fails, within the automatic modes' bounds (default on); off, Alpha and
-   * Beta everywhere.
+   * Move the spans where the shape audit fails towards their chords (and
+   * raise the exponent where a straight run ends in a turn), within the
+   * automatic modes' bounds (default on); off, Alpha and Beta everywhere
+   * with the local parameters as given.
    */
   vtkSetMacro(Automatic, bool);
   vtkGetMacro(Automatic, bool);
@@ -108,7 +115,8 @@ public:
 
   ///@{
   /**
-   * The largest exponent the automatic mode may reach (default 200).
+   * The largest exponent the automatic mode may reach (default 200), at
+   * the turns that end straight runs of the points.
    */
   vtkSetClampMacro(MaxAlpha, double, 2.0, 200.0);
   vtkGetMacro(MaxAlpha, double);

@@ -317,13 +317,11 @@ private:
     };
     for (int j = 0; j < this->Spans; ++j)
     {
-      // What the ladder's parameter can mend; a span failing nothing else is left.
-      const unsigned failing = this->Audit.SpanMask[j] & ~this->Ladder.Unmendable;
       if (this->Ladder.Uniform)
       {
         raise[j] = this->canRise(j);
       }
-      else if (failing != 0 && this->canRise(j))
+      else if (this->Audit.SpanMask[j] != 0 && this->canRise(j))
       {
         raise[j] = 1;
         // Torsion is a third derivative, which the solve spreads over the
@@ -336,7 +334,7 @@ private:
           raiseNeighbours(j);
         }
       }
-      else if (failing != 0)
+      else if (this->Audit.SpanMask[j] != 0)
       {
         raiseNeighbours(j);
       }

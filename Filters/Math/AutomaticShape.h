@@ -69,10 +69,6 @@ struct ShapeLadder
   /// alone meets the bounds long before the level that mends it. For
   /// interpolations (it ignores CurvatureChange).
   bool RetryFromCommonLevel = false;
-  /// Criteria (criterionBit) the parameter does not mend: a span
-  /// failing only these is not raised (qqr: an exponent pulls a span towards
-  /// its chord, which does not turn its torsion's sign).
-  unsigned Unmendable = 0;
   int MaxRounds = 64;
   ShapeBounds Bounds;
   /// Per vertex of the reference polygon, how far it moves with the noise

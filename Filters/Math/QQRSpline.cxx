@@ -473,7 +473,44 @@ private:
     return values.empty() || j < 0 || j >= this->Points ? std::numeric_limits<double>::quiet_NaN()
                                                         : values[j];
   }
+  /// Straightness of span k (0 beyond an open line's ends or where none is given).
+  double straightness(int k) const
+  {
+    const auto& s = this->KnotShape.Straightness;
+    if (s.empty())
+    {
+      return 0.0;
+    }
+    if (this->Closed)
+    {
+      k = wrapIndex(k, this->spans());
+    }
+    return k < 0 || k >= this->spans() ? 0.0 : s[k];
+  }
+  /// How far span k, straightened, moves a parameter it shares with span
+  /// neighbour: less where the points run straight through their common
+  /// knot and the neighbour is straightened too (both spans then lie on one
+  /// line already, and moving it would stop the curve at the knot).
+  double pull(int k, int neighbour) const
+  {
+    const auto& through = this->KnotShape.StraightThrough;
+    int knot = std::max(k, neighbour);
+    if (this->Closed)
+    {
+      knot = wrapIndex(knot, this->Points);
+    }
+    const bool straight = knot >= 0 && knot < static_cast<int>(through.size()) && through[knot];
+    return this->straightness(k) * (straight ? 1.0 - this->straightness(neighbour) : 1.0);
+  }
   double Z(int i) const
+  {
+    // Span k = i - 1's middle point: the span after it wants it at its own
+    // start (z = 1), the span before at its end (z = 0); both, halfway.
+    const double after = this->pull(i, i - 1), before = this->pull(i - 2, i - 1);
+    const double z = this->baseZ(i);
+    return (1.0 - after) * (1.0 - before) * z + after * (1.0 - before) + 0.5 * after * before;
+  }
+  double baseZ(int i) const
   {
     const double z = this->perPoint(this->KnotShape.Z, i);
     if (!std::isnan(z))
@@ -490,14 +527,16 @@ private:
     {
       return -this->H(i) * this->Z(i) / (2.0 * this->H(i + 1)); // (3.18) with its missing 1/2
     }
+    // S at point i - 1 lies on span i - 2's chord when its x is 0.
+    const double keep = 1.0 - this->pull(i - 2, i - 1);
     const double x = this->perPoint(this->KnotShape.X, i);
     if (!std::isnan(x))
     {
-      return x;
+      return keep * x;
     }
-    return std::isnan(this->Local.X)
+    return keep * (std::isnan(this->Local.X)
       ? this->H(i) / (4.0 * (this->H(i) + this->H(i + 1) + this->H(i + 2)))
-      : this->Local.X;
+      : this->Local.X);
   }
   double Y(int i) const
   {
@@ -505,14 +544,16 @@ private:
     {
       return -this->H(i + 1) * (1.0 - this->Z(i - 1)) / (2.0 * this->H(i)); // (3.18)
     }
+    // ... and on span i - 1's chord when its y is 0.
+    const double keep = 1.0 - this->pull(i - 1, i - 2);
     const double y = this->perPoint(this->KnotShape.Y, i);
     if (!std::isnan(y))
     {
-      return y;
+      return keep * y;
     }
-    return std::isnan(this->Local.Y)
+    return keep * (std::isnan(this->Local.Y)
       ? this->H(i + 1) / (4.0 * (this->H(i - 1) + this->H(i) + this->H(i + 1)))
-      : this->Local.Y;
+      : this->Local.Y);
   }
 
   std::vector<double> Dh;
@@ -669,6 +710,7 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   };
   spline.Exponents = std::move(exponents);
   spline.KnotShape = geometry.knotShape();
+  spline.Straightness = knotShape.Straightness;
   spline.Bezier.resize(spans);
   spline.QuarticPower.resize(spans);
   for (int k = 0; k < spans; ++k)
@@ -726,12 +768,20 @@ std::vector<SpanParameter> QQRSpline::spanParameters() const
   std::vector<double> alpha(this->Exponents.size());
   std::transform(this->Exponents.begin(), this->Exponents.end(), alpha.begin(),
     [](const std::array<double, 2>& ab) { return std::max(ab[0], ab[1]); });
-  return { { "Alpha", alpha, true } };
+  std::vector<double> straightness = this->Straightness;
+  straightness.resize(this->Exponents.size(), 0.0);
+  return { { "Alpha", alpha, true }, { "Straightness", straightness, true } };
 }
 
-double raisedQQRExponent(double alpha, double maxAlpha)
+double qqrStraightness(int level)
 {
-  return std::max(alpha, std::min(maxAlpha, alpha + 1.0));
+  return 1.0 - std::exp2(-0.5 * level);
+}
+
+double qqrTurnExponent(double kappa, double maxAlpha, int level)
+{
+  constexpr int FirstLevel = 4; // straightness 3/4
+  return std::min(std::max(kappa, maxAlpha), kappa * std::exp2(0.25 * std::max(0, level - FirstLevel)));
 }
 
 double QQRSpline::speedRatio(int span) const
@@ -782,25 +832,46 @@ CurveBuilder qqrBuilder(const QQROptions& options)
     }
     else
     {
-      // alpha = beta at every knot (C2), raised from the larger of Alpha and Beta.
-      const double start = std::max(options.Alpha, options.Beta);
-      auto raise = [&](double alpha) { return raisedQQRExponent(alpha, options.MaxAlpha); };
+      // Each failing span is moved towards its chord (QQRKnotShape::
+      // Straightness): an exponent alone only scales the curvature at its
+      // knot and leaves straight runs and convexity as the cubic's (see the
+      // README). The exponent (alpha = beta, C2) stays the larger of Alpha
+      // and Beta but where a straight run ends in a turn between two spans
+      // moved well towards their chords: there it narrows the turn.
+      const double kappa = std::max(options.Alpha, options.Beta);
+      const int n = static_cast<int>(data.Points.size());
+      QQRKnotShape shape = given;
+      shape.StraightThrough =
+        discreteShape(data, context.Options.Tolerances, {}, context.CoordinateNoise).Collinear;
+      std::vector<char> runEnd(n, 0);
+      for (int i = 0; i < n; ++i)
+      {
+        const int before = extendedIndex(i - 1, n, data.Closed, Beyond::Clamp);
+        const int after = extendedIndex(i + 1, n, data.Closed, Beyond::Clamp);
+        const auto& through = shape.StraightThrough;
+        runEnd[i] = !through[i] && (through[before] || through[after]);
+      }
       ShapeLadder ladder;
-      ladder.TopLevel = stepsToCap(start, raise);
+      ladder.TopLevel = QQRStraighteningLevels;
       ladder.MaxRounds = options.MaxRounds;
-      ladder.Reach = 3; // a knot's exponent moves the spans on both sides and the global solve
-      // Raised, a span nears its chord: its torsion's sign does not turn (on
-      // noisy helices every violation left is one; raising for them only cost).
-      ladder.Unmendable = criterionBit(ShapeCriterion::TorsionSignOnSpan);
+      ladder.Reach = 3; // a span's local parameters move its neighbours and the global solve
+      ladder.RetrySpanBySpan = true;
       ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-        const std::vector<int> perKnot = knotLevels(levels, data.Closed);
-        std::vector<double> kappa(perKnot.size());
-        for (size_t i = 0; i < kappa.size(); ++i)
+        shape.Straightness.resize(levels.size());
+        std::transform(levels.begin(), levels.end(), shape.Straightness.begin(), qqrStraightness);
+        const int spans = static_cast<int>(levels.size());
+        std::vector<double> exponents(n, kappa);
+        for (int i = 0; i < n; ++i)
         {
-          kappa[i] = raisedTimes(start, perKnot[i], raise);
+          const int before = data.Closed ? wrapIndex(i - 1, spans) : i - 1;
+          const int after = data.Closed ? wrapIndex(i, spans) : i;
+          if (runEnd[i] && before >= 0 && after < spans)
+          {
+            exponents[i] = qqrTurnExponent(kappa, options.MaxAlpha, std::min(levels[before], levels[after]));
+          }
         }
-        return std::make_unique<QQRSpline>(QQRSpline::make(
-          options.Construction, data.Points, context.Knots, data.Closed, kappa, local, given));
+        return std::make_unique<QQRSpline>(QQRSpline::make(options.Construction, data.Points,
+          context.Knots, data.Closed, exponents, local, shape));
       };
       built = fixedOrAutomatic(true, context, data, ladder);
     }

@@ -132,6 +132,15 @@ struct QQRLocalShape
 struct QQRKnotShape
 {
   std::vector<double> X, Y, Z;
+  /// Per span, how far (0..1) the local parameters around it are moved to
+  /// put the span on its chord: Y[k] and X[k+1] scaled by 1 - s, Z[k-1]
+  /// moved towards 1 and Z[k+1] towards 0 (at s = 1 the span is straight,
+  /// the joins still C2). Empty: none.
+  std::vector<double> Straightness;
+  /// Per point, nonzero where the points run straight through it: two
+  /// straightened spans meeting there share their line, and neither moves
+  /// the other's parameters (which would stop the curve at the point).
+  std::vector<char> StraightThrough;
 };
 
 /// How a qqr curve is made from the points.
@@ -202,7 +211,8 @@ public:
     const Local& local = {}, const QQRKnotShape& knotShape = {});
 
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
-  /// "Alpha" per span: the larger of its two exponents.
+  /// Per span "Alpha", the larger of its two exponents, and "Straightness"
+  /// (QQRKnotShape; 0 unless the automatic mode moved it).
   std::vector<SpanParameter> spanParameters() const override;
 
   /// The five Bezier points of a span (the qqr curve (2.5) on it).
@@ -229,14 +239,16 @@ private:
   std::vector<std::array<Vec3, 5>> QuarticPower;
   std::vector<std::array<double, 2>> Exponents;
   QQRKnotShape KnotShape;
+  std::vector<double> Straightness;
 };
 
 struct QQROptions
 {
   QQRConstruction Construction = QQRConstruction::Interpolation;
-  /// Where the shape audit fails, raise alpha = beta at the knots of the
-  /// failing spans (preserveShapeAutomatically), from the larger of Alpha
-  /// and Beta up to MaxAlpha.
+  /// Where the shape audit fails, move the failing spans towards their
+  /// chords (QQRKnotShape::Straightness, preserveShapeAutomatically), and
+  /// raise alpha = beta up to MaxAlpha where a straight run of the data ends
+  /// in a turn.
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
@@ -247,20 +259,28 @@ struct QQROptions
   int MaxRounds = 64; ///< automatic: rounds at most
 };
 
-/// The exponent after one more round of the automatic mode (capped at maxAlpha).
-double raisedQQRExponent(double alpha, double maxAlpha);
+/// The automatic mode's levels: level l moves a span 1 - 2^(-l/2) of the
+/// way to its chord (qqrStraightness), the top level to within 1e-6.
+constexpr int QQRStraighteningLevels = 40;
+double qqrStraightness(int level);
+/// The exponent at a turn that ends a straight run, between two spans at
+/// least at this level: kappa until straightness 3/4, then doubling every
+/// four levels, capped at the larger of kappa and maxAlpha.
+double qqrTurnExponent(double kappa, double maxAlpha, int level);
 
 /**
  * Builder of qqr B-spline-like curves for fitPolyline: the construction of
  * the options (the data as control polygon: its shape reference is then the
  * data polygon), fixed exponents or automatic. The context's PointValues, if
  * any, are the local bias z per point; values outside [0, 1] or NaN take Z's.
- * Automatic: alpha = beta per knot, raised one at a time (raisedQQRExponent)
- * at the knots of the spans that break the shape, within the bounds of
- * preserveShapeAutomatically. A large exponent makes a span approach its
- * Bezier polygon, slowing down at its middle point (speed about
- * alpha^2 2^-alpha of its polygon's): the speed bound stops it near alpha = 13,
- * and violations the exponents cannot remove are reported.
+ * Automatic: each span that breaks the shape is moved towards its chord,
+ * level by level, within the bounds of preserveShapeAutomatically. An
+ * exponent alone cannot do it: it scales the curvature vector at its knot
+ * without turning it, and a large exponent makes a span slow down at its
+ * middle Bezier point (speed about alpha^2 2^-alpha of its polygon's). Two
+ * neighbouring spans cannot both be straight where the data turn (C2 would
+ * stop the curve there), so on densely curved data some violations stay,
+ * reported.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines

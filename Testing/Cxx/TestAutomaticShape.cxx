@@ -32,7 +32,6 @@ struct Toy
   bool TwistRunsAhead = false;
   double Detour = 0.0;
   bool Uniform = false;
-  unsigned Unmendable = 0;
   bool RetryFromCommonLevel = false;
   ProgressCallback Progress;
 };
@@ -163,7 +162,6 @@ CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
     ShapeLadder ladder;
     ladder.TopLevel = 2;
     ladder.Uniform = toy.Uniform;
-    ladder.Unmendable = toy.Unmendable;
     ladder.RetryFromCommonLevel = toy.RetryFromCommonLevel;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
       if (++run.Builds == 2)
@@ -227,23 +225,6 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
   ToyRun clean;
   EXPECT_TRUE(fitPolyline(points, FitOptions{}, toyBuilder(clean)).Audit.preserving());
   EXPECT_EQ(clean.Builds, 1);
-}
-
-TEST(AutomaticShape, ASpanFailingOnlyWhatTheLadderCannotMendIsNotRaised)
-{
-  // The same twisted span, on a ladder declared not to mend a torsion sign
-  // on a span (qqr's): nothing is raised, the violation is left and counted.
-  const std::vector<Vec3> points = helix(16, 3);
-  constexpr int Twisted = 20;
-  const unsigned onSpan = criterionBit(ShapeCriterion::TorsionSignOnSpan);
-  Toy unmendable;
-  unmendable.TwistedSpan = Twisted;
-  unmendable.Unmendable = onSpan;
-  ToyRun run;
-  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, unmendable));
-  EXPECT_EQ(fit.Audit.violations(), 1);
-  EXPECT_EQ(fit.Audit.SpanMask[Twisted], onSpan);
-  EXPECT_EQ(std::count(run.Levels.begin(), run.Levels.end(), 0), static_cast<long>(run.Levels.size()));
 }
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
@@ -437,6 +418,12 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
     }
     std::printf("%s: %d violations fixed, %d automatic\n", family.Name, fixedTotal, automaticTotal);
     EXPECT_LT(automaticTotal, fixedTotal) << family.Name;
+    // qqr, by straightening spans, most (measured 55 of 511 left; its
+    // exponents alone left 75%).
+    if (std::string(family.Name) == "qqr")
+    {
+      EXPECT_LE(automaticTotal, 0.2 * fixedTotal);
+    }
   }
 }
 
@@ -534,8 +521,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
   // audit's samples before the audit looked between samples that turn more
   // than their curvatures explain), never more violations than the fixed
   // parameters'. The generalized cubic and the variable degree spline remove
-  // nearly all; the quintic most; the qqr exponents next to none in a plane
-  // (at a knot an exponent only scales the curvature vector:
+  // nearly all; the quintic most; qqr most (its exponents alone, before it
+  // straightened spans, removed next to none in a plane: at a knot an
+  // exponent only scales the curvature vector,
   // QQRSpline.AnExponentScalesTheCurvatureAtItsKnotWithoutTurningIt).
   struct Line
   {
@@ -555,9 +543,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       }
     }
   }
-  // What each family leaves at most (measured 0.38%, 1.1%, 3.1%, 92%).
+  // What each family leaves at most (measured 0.19%, 0.87%, 2.4%, 16%).
   const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.03 },
-    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 1.0 } };
+    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 0.25 } };
   for (const Family& family : families())
   {
     int fixedTotal = 0, automaticTotal = 0;
@@ -652,11 +640,12 @@ TEST(AutomaticShape, StraightRunsBecomeStraightSpans)
 {
   // Where Definition 1 calls the data collinear, the spans on both sides of a
   // collinear point are straight (the tangent within 1e-3 of the segment,
-  // criterion (i)) in the families whose tension limit is the data polygon.
+  // criterion (i)) in the families whose tension limit is the data polygon,
+  // and in qqr, whose spans straighten (QQRKnotShape::Straightness).
   for (const Family& family : families())
   {
     const std::string name = family.Name;
-    if (name != "generalized cubic" && name != "variable degree")
+    if (name == "tension quintic")
     {
       continue;
     }

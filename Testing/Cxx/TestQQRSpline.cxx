@@ -1048,6 +1048,88 @@ TEST(QQRSpline, LocalParametersStraightenAkimasRun)
   }
 }
 
+TEST(QQRSpline, AStraightenedSpanLiesOnItsChordAndKeepsC2)
+{
+  // QQRKnotShape::Straightness, the automatic mode's parameter: at 1 a span
+  // between curved data lies on its chord (the interpolation's, the control
+  // polygon's segment), and so do the spans of a straight run of the data
+  // without the curve stopping at the points inside it; the joins stay C2
+  // and the interpolation passes through the points. (Two straightened
+  // spans with one between them would want that one's middle point at
+  // both ends: the spans here are further apart.)
+  std::mt19937 random(2024);
+  for (const QQRConstruction construction : { QQRConstruction::Interpolation, QQRConstruction::ControlPolygon })
+  {
+    for (const bool closed : { false, true })
+    {
+      std::vector<Vec3> points = RandomPoints(16, random);
+      const int n = static_cast<int>(points.size());
+      const int spans = closed ? n : n - 1;
+      // Points 8..11 on the line through 7 and 12: spans 7..11 are a straight run.
+      for (int j = 8; j <= 11; ++j)
+      {
+        points[j] = points[7] + (j - 7) / 5.0 * (points[12] - points[7]);
+      }
+      const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+      QQRKnotShape shape;
+      shape.Straightness.assign(spans, 0.0);
+      shape.StraightThrough.assign(n, 0);
+      shape.Straightness[3] = 1.0;
+      for (int k = 7; k <= 11; ++k)
+      {
+        shape.Straightness[k] = 1.0;
+        shape.StraightThrough[k] = k > 7;
+      }
+      shape.Straightness[14] = 0.5; // halfway: a curved span
+      const QQRSpline curve = QQRSpline::make(construction, points, t, closed, 4.0, 4.0, {}, shape);
+      double offChord = 0.0, c2 = 0.0, through = 0.0, slowest = 1e300, bent = 0.0;
+      for (int k = 0; k < spans; ++k)
+      {
+        const Vec3& a = points[k];
+        const Vec3 chord = (points[(k + 1) % n] - a).normalized();
+        const double h = t[k + 1] - t[k];
+        for (int s = 0; s <= 32; ++s)
+        {
+          const Derivatives d = curve.evaluateOnSpan(k, t[k] + h * s / 32.0, 1);
+          const Vec3 r = d[0] - a;
+          const double off = (r - r.dot(chord) * chord).norm();
+          if (shape.Straightness[k] == 1.0)
+          {
+            offChord = std::max(offChord, off);
+            slowest = std::min(slowest, d[1].norm() * h / (points[(k + 1) % n] - a).norm());
+          }
+          else if (k == 14)
+          {
+            bent = std::max(bent, off);
+          }
+        }
+        if (closed || k > 0)
+        {
+          const Derivatives left = curve.evaluateOnSpan((k - 1 + spans) % spans, t[k] + (k == 0 ? t[spans] - t[0] : 0.0), 2);
+          const Derivatives right = curve.evaluateOnSpan(k, t[k], 2);
+          for (int m = 0; m <= 2; ++m)
+          {
+            c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(1.0, right[m].norm()));
+          }
+        }
+        if (construction == QQRConstruction::Interpolation)
+        {
+          through = std::max(through, (curve.evaluateOnSpan(k, t[k], 0)[0] - points[k]).norm());
+        }
+      }
+      std::printf("construction %d, closed %d: straightened spans off their chords by %.1e, slowest "
+                  "%.2f of the chord speed; C2 jumps %.1e; data missed by %.1e; the halfway span "
+                  "bends %.2f\n",
+        static_cast<int>(construction), closed, offChord, slowest, c2, through, bent);
+      EXPECT_LT(offChord, 1e-12);
+      EXPECT_GT(slowest, 0.05);
+      EXPECT_LT(c2, 1e-9);
+      EXPECT_LT(through, 1e-12);
+      EXPECT_GT(bent, 1e-3);
+    }
+  }
+}
+
 TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
 {
   // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)

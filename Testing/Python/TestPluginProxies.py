@@ -835,13 +835,15 @@ for mode in ("Approximate Global", "Approximate Local"):
 
 # =========================================================================== QQRSpline
 print("== QQRSpline on Akima's data and the helix")
-out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"))), "QQRSpline(akima, interpolation)",
-          ["keep shape violations", "collinearity at knots"])
+out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"))), "QQRSpline(akima, interpolation)")
 automatic = cell_array(out, names.ShapeViolations)[0]
 fixed_out = run(LOG.watch(QQRSpline(Input=reader("akima.vtp"), Automatic=0)), "QQRSpline(akima, alpha 4)")
-check(automatic <= cell_array(fixed_out, names.ShapeViolations)[0] and point_array(fixed_out, "Alpha").max() == 4,
-      "QQRSpline: automatic never worse than alpha = beta = 4; Alpha written",
-      "%d (automatic) vs %d violations" % (automatic, cell_array(fixed_out, names.ShapeViolations)[0]))
+check(automatic == 0 < cell_array(fixed_out, names.ShapeViolations)[0] and point_array(fixed_out, "Alpha").max() == 4
+      and point_array(fixed_out, "Straightness").max() == 0 < cell_array(out, "MaxStraightness")[0] <= 1,
+      "QQRSpline: the automatic mode straightens Akima's flat run (alpha = beta = 4 breaks it); Alpha and "
+      "Straightness written",
+      "%d (automatic) vs %d violations, MaxStraightness %s" % (
+          automatic, cell_array(fixed_out, names.ShapeViolations)[0], fmt(cell_array(out, "MaxStraightness")[0])))
 polygon = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0)),
               "QQRSpline(helix, control polygon)")
 cubic_bspline = run(LOG.watch(QQRSpline(Input=reader("helix.vtp"), Mode="Approximate", Automatic=0,
