@@ -781,7 +781,8 @@ double qqrStraightness(int level)
 double qqrTurnExponent(double kappa, double maxAlpha, int level)
 {
   constexpr int FirstLevel = 4; // straightness 3/4
-  return std::min(std::max(kappa, maxAlpha), kappa * std::exp2(0.25 * std::max(0, level - FirstLevel)));
+  const double raised = kappa * std::exp2(0.25 * std::max(0, level - FirstLevel));
+  return std::min(std::max(kappa, maxAlpha), raised);
 }
 
 double QQRSpline::speedRatio(int span) const
@@ -867,7 +868,8 @@ CurveBuilder qqrBuilder(const QQROptions& options)
           const int after = data.Closed ? wrapIndex(i, spans) : i;
           if (runEnd[i] && before >= 0 && after < spans)
           {
-            exponents[i] = qqrTurnExponent(kappa, options.MaxAlpha, std::min(levels[before], levels[after]));
+            const int level = std::min(levels[before], levels[after]);
+            exponents[i] = qqrTurnExponent(kappa, options.MaxAlpha, level);
           }
         }
         return std::make_unique<QQRSpline>(QQRSpline::make(options.Construction, data.Points,

@@ -1058,7 +1058,8 @@ TEST(QQRSpline, AStraightenedSpanLiesOnItsChordAndKeepsC2)
   // spans with one between them would want that one's middle point at
   // both ends: the spans here are further apart.)
   std::mt19937 random(2024);
-  for (const QQRConstruction construction : { QQRConstruction::Interpolation, QQRConstruction::ControlPolygon })
+  for (const QQRConstruction construction :
+    { QQRConstruction::Interpolation, QQRConstruction::ControlPolygon })
   {
     for (const bool closed : { false, true })
     {
@@ -1105,7 +1106,8 @@ TEST(QQRSpline, AStraightenedSpanLiesOnItsChordAndKeepsC2)
         }
         if (closed || k > 0)
         {
-          const Derivatives left = curve.evaluateOnSpan((k - 1 + spans) % spans, t[k] + (k == 0 ? t[spans] - t[0] : 0.0), 2);
+          const double atKnot = k == 0 ? t[spans] : t[k]; // closed: the last span ends there
+          const Derivatives left = curve.evaluateOnSpan((k - 1 + spans) % spans, atKnot, 2);
           const Derivatives right = curve.evaluateOnSpan(k, t[k], 2);
           for (int m = 0; m <= 2; ++m)
           {

@@ -434,7 +434,8 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
     for (int i = 0; i < 100; ++i)
     {
       const double t = 2.0 * vtkMath::Pi() * i / 16.0;
-      helix.push_back({ std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
+      helix.push_back(
+        { std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
     }
   }
   const auto data = PolylinesData(helices);
