@@ -387,6 +387,49 @@ private:
     }
   }
 
+  /**
+   * Rebuilds with the spans' raises on top of levels already solved. Where
+   * the system is singular (qqr's local parameters can make an open line's
+   * end condition depend on the other rows), halves them until the span
+   * that makes it so, whose raise is undone and its level frozen.
+   */
+  void rebuildAvoidingSingular(const std::vector<int>& spans, const std::vector<int>& previous,
+    std::vector<char>& raise, const std::vector<int>& moved)
+  {
+    try
+    {
+      this->rebuild(moved);
+      return;
+    }
+    catch (const SingularSystem&)
+    {
+    }
+    const std::vector<int> raisedLevels = this->Levels;
+    for (const int j : spans)
+    {
+      this->Levels[j] = previous[j];
+    }
+    if (spans.size() == 1)
+    {
+      const int j = spans.front();
+      this->Frozen[j] = 1;
+      this->Step[j] = 1;
+      this->RaisedBefore[j] = raise[j] = 0;
+      this->rebuild(moved); // the levels solved before
+      return;
+    }
+    const auto middle = spans.begin() + static_cast<std::ptrdiff_t>(spans.size() / 2);
+    for (const std::vector<int>& part : { std::vector<int>(spans.begin(), middle),
+           std::vector<int>(middle, spans.end()) })
+    {
+      for (const int j : part)
+      {
+        this->Levels[j] = raisedLevels[j];
+      }
+      this->rebuildAvoidingSingular(part, previous, raise, moved);
+    }
+  }
+
   void raiseAndAudit(std::vector<char> raise)
   {
     // A span raised again (still failing) takes a step twice as long: the
@@ -404,7 +447,15 @@ private:
     {
       before[j] = this->figures(j);
     }
-    this->rebuild(moved);
+    std::vector<int> raised;
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      if (raise[j])
+      {
+        raised.push_back(j);
+      }
+    }
+    this->rebuildAvoidingSingular(raised, previous, raise, moved);
     // An undone raise moves the curve too (a global solve): check again.
     while (this->undoBeyondBounds(raise, previous, moved, before))
     {
@@ -658,15 +709,34 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
 {
-  AutomaticShape found = ShapeSearch(context, reference, ladder, true).run();
+  AutomaticShape found;
+  try
+  {
+    found = ShapeSearch(context, reference, ladder, true).run();
+  }
+  catch (const SingularSystem&)
+  {
+    // Levels the raises never built (lowered around a span beyond the
+    // bounds) can be singular too: the fixed parameters' curve then.
+    found.Levels.assign(reference.numberOfSpans(), 0);
+    found.Spline = ladder.Build(found.Levels);
+    found.Audit = context.audit(*found.Spline, reference, ladder.ReferenceNoise);
+  }
   if (ladder.RetrySpanBySpan && found.Audit.violations() > 0)
   {
-    ShapeSearch retry(context, reference, ladder, false);
-    retry.keepOutside(found, RetryReach);
-    AutomaticShape again = retry.run();
-    if (again.Audit.violations() < found.Audit.violations())
+    try
     {
-      found = std::move(again);
+      ShapeSearch retry(context, reference, ladder, false);
+      retry.keepOutside(found, RetryReach);
+      AutomaticShape again = retry.run();
+      if (again.Audit.violations() < found.Audit.violations())
+      {
+        found = std::move(again);
+      }
+    }
+    catch (const SingularSystem&)
+    {
+      // As above: the first search's curve stays.
     }
   }
   if (ladder.RetryFromCommonLevel && found.Audit.violations() > 0)
