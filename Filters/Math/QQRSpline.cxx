@@ -587,13 +587,15 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
  * The control points P(-1)..P(n) (open) or P(0)..P(n-1) (closed) of the qqr
  * curve through the n points at the knots. Open ends: not-a-knot (the third
  * derivative continuous at the second and the next-to-last knots, as
- * SciPy's CubicSpline), natural (s'' = 0) where a line has only two spans
- * or an end exponent leaves the third derivative unbounded, doubled control
- * points where it leaves the second unbounded too.
+ * SciPy's CubicSpline) where notAKnot says so for that end, natural
+ * (s'' = 0) there otherwise, where a line has only two spans or where an end
+ * exponent leaves the third derivative unbounded; doubled control points
+ * where it leaves the second unbounded too.
  */
 std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   const std::vector<double>& dh, bool closed, const QQRGeometry& geometry,
-  const std::vector<std::array<double, 2>>& exponents, double* condition)
+  const std::vector<std::array<double, 2>>& exponents, std::array<bool, 2> notAKnot,
+  double* condition)
 {
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(dh.size());
@@ -624,7 +626,7 @@ std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
     {
       const int row = n + e;
       const auto [before, after] = ends[e];
-      if (spans >= 3)
+      if (spans >= 3 && notAKnot[e])
       {
         const Eigen::Vector4d left = derivativeWeights(geometry, exponents[before], dh[before], before, true, 3);
         const Eigen::Vector4d right = derivativeWeights(geometry, exponents[after], dh[after], after, false, 3);
@@ -699,7 +701,22 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   std::vector<Vec3> control;
   if (construction == QQRConstruction::Interpolation)
   {
-    control = interpolatingControlPoints(points, dh, closed, geometry, exponents, &spline.ConditionEstimate);
+    // Not-a-knot ties an end's third derivative to the spans next to it: with
+    // one of them straightened it made the curve bend hard there (noisy
+    // helices: 166 times the data's curvature for 6.7 with natural ends, and
+    // 40% more violations left), and could make the system singular.
+    const std::vector<double>& straightness = knotShape.Straightness;
+    auto straightened = [&](int first, int last) {
+      const auto begin = straightness.begin();
+      const int size = static_cast<int>(straightness.size());
+      return std::any_of(begin + std::clamp(first, 0, size), begin + std::clamp(last + 1, 0, size),
+        [](double s) { return s > 0.0; });
+    };
+    constexpr int EndReach = 3;
+    const std::array<bool, 2> notAKnot{ !straightened(0, EndReach - 1),
+      !straightened(spans - EndReach, spans - 1) };
+    control = interpolatingControlPoints(
+      points, dh, closed, geometry, exponents, notAKnot, &spline.ConditionEstimate);
   }
   auto P = [&](int j) -> const Vec3& {
     if (!control.empty())

@@ -445,11 +445,11 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
     }
     std::printf("%s: %d violations fixed, %d automatic\n", family.Name, fixedTotal, automaticTotal);
     EXPECT_LT(automaticTotal, fixedTotal) << family.Name;
-    // qqr, by straightening spans, most (measured 55 of 511 left; its
+    // qqr, by straightening spans, most (measured 29 of 511 left; its
     // exponents alone left 75%).
     if (std::string(family.Name) == "qqr")
     {
-      EXPECT_LE(automaticTotal, 0.2 * fixedTotal);
+      EXPECT_LE(automaticTotal, 0.1 * fixedTotal);
     }
   }
 }
@@ -570,9 +570,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       }
     }
   }
-  // What each family leaves at most (measured 0.19%, 0.87%, 2.4%, 16%).
+  // What each family leaves at most (measured 0.19%, 0.87%, 2.4%, 13%).
   const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.03 },
-    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 0.25 } };
+    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 0.2 } };
   for (const Family& family : families())
   {
     int fixedTotal = 0, automaticTotal = 0;
