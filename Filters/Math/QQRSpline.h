@@ -148,8 +148,9 @@ enum class QQRConstruction : int
 {
   /// The curve through the points: its control points solved (not-a-knot
   /// ends; natural at an end within three spans of a straightened one, see
-  /// QQRKnotShape::Straightness). At alpha = beta = 4 with the paper's local parameters it is the
-  /// classical cubic spline interpolant, and it converges as points are added.
+  /// QQRKnotShape::Straightness). At alpha = beta = 4 with the paper's local
+  /// parameters it is the classical cubic spline interpolant, and it
+  /// converges as points are added.
   Interpolation = 0,
   /// Section 3.6's local interpolation: each point's tangent (3.20) and second
   /// derivative (3.21) from its neighbours only, no system solved. Its

@@ -217,11 +217,12 @@ TEST(AutomaticShape, ARaiseThatMakesTheSystemSingularIsUndoneAndFrozen)
   // the other rows: that level is not a curve, and the search goes on
   // without it instead of failing the line.
   const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
-  const auto failing = std::find_if(
-    cubic.Audit.SpanMask.begin(), cubic.Audit.SpanMask.end(), [](unsigned mask) { return mask != 0; });
-  ASSERT_NE(failing, cubic.Audit.SpanMask.end());
+  const std::vector<unsigned>& masks = cubic.Audit.SpanMask;
+  const auto failing =
+    std::find_if(masks.begin(), masks.end(), [](unsigned mask) { return mask != 0; });
+  ASSERT_NE(failing, masks.end());
   Toy singular;
-  singular.SingularSpan = static_cast<int>(failing - cubic.Audit.SpanMask.begin());
+  singular.SingularSpan = static_cast<int>(failing - masks.begin());
   ToyRun run;
   const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(run, singular));
   ASSERT_TRUE(fit.Spline);

@@ -1119,9 +1119,9 @@ TEST(QQRSpline, AStraightenedSpanLiesOnItsChordAndKeepsC2)
           through = std::max(through, (curve.evaluateOnSpan(k, t[k], 0)[0] - points[k]).norm());
         }
       }
-      std::printf("construction %d, closed %d: straightened spans off their chords by %.1e, slowest "
-                  "%.2f of the chord speed; C2 jumps %.1e; data missed by %.1e; the halfway span "
-                  "bends %.2f\n",
+      std::printf("construction %d, closed %d: straightened spans off their chords by %.1e, "
+                  "slowest %.2f of the chord speed; C2 jumps %.1e; data missed by %.1e; the "
+                  "halfway span bends %.2f\n",
         static_cast<int>(construction), closed, offChord, slowest, c2, through, bent);
       EXPECT_LT(offChord, 1e-12);
       EXPECT_GT(slowest, 0.05);
