@@ -29,6 +29,7 @@
 #include "vtkTextProperty.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace
@@ -71,7 +72,7 @@ void AddPanel(vtkRenderWindow* window, vtkPolyData* polygon, bool automatic, dou
   spline->Update();
   vtkPolyData* out = spline->GetOutput();
   const int violations = static_cast<int>(out->GetCellData()->GetArray("ShapeViolations")->GetTuple1(0));
-  const double alpha = out->GetCellData()->GetArray("MaxAlpha")->GetTuple1(0);
+  const double straightness = out->GetCellData()->GetArray("MaxStraightness")->GetTuple1(0);
 
   vtkNew<vtkPolyDataMapper> curveMapper;
   curveMapper->SetInputData(out);
@@ -100,7 +101,9 @@ void AddPanel(vtkRenderWindow* window, vtkPolyData* polygon, bool automatic, dou
   points->GetProperty()->SetColor(0.1, 0.1, 0.1);
 
   vtkNew<vtkTextActor> title;
-  title->SetInput(((automatic ? std::string("automatic, max alpha ") + std::to_string(int(alpha))
+  char straightened[64];
+  std::snprintf(straightened, sizeof(straightened), "automatic, max straightness %.2f", straightness);
+  title->SetInput(((automatic ? std::string(straightened)
                               : std::string("alpha = beta = 4 (cubic B-spline)")) +
     "\nshape violations: " + std::to_string(violations))
                    .c_str());
