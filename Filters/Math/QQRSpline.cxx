@@ -462,44 +462,32 @@ private:
   }
   double mu(int i) const { return this->H(i) / (this->H(i) + this->H(i + 1)); }
   double ups(int i) const { return this->H(i + 1) / (this->H(i) + this->H(i + 1)); }
+  /// values[j], wrapped around a closed curve; fallback beyond an open
+  /// line's ends and past the values given (none: all of them).
+  template <class T>
+  T entry(const std::vector<T>& values, int j, T fallback) const
+  {
+    if (this->Closed)
+    {
+      j = wrapIndex(j, this->Points); // a closed curve has as many spans as points
+    }
+    return j >= 0 && j < static_cast<int>(values.size()) ? values[j] : fallback;
+  }
   /// The value per point at the paper's index i (point i - 1, QQRKnotShape), or NaN.
   double perPoint(const std::vector<double>& values, int i) const
   {
-    int j = i - 1;
-    if (this->Closed)
-    {
-      j = wrapIndex(j, this->Points);
-    }
-    return values.empty() || j < 0 || j >= this->Points ? std::numeric_limits<double>::quiet_NaN()
-                                                        : values[j];
+    return this->entry(values, i - 1, std::numeric_limits<double>::quiet_NaN());
   }
   /// Straightness of span k (0 beyond an open line's ends or where none is given).
-  double straightness(int k) const
-  {
-    const auto& s = this->KnotShape.Straightness;
-    if (s.empty())
-    {
-      return 0.0;
-    }
-    if (this->Closed)
-    {
-      k = wrapIndex(k, this->spans());
-    }
-    return k < 0 || k >= this->spans() ? 0.0 : s[k];
-  }
+  double straightness(int k) const { return this->entry(this->KnotShape.Straightness, k, 0.0); }
   /// How far span k, straightened, moves a parameter it shares with span
   /// neighbour: less where the points run straight through their common
   /// knot and the neighbour is straightened too (both spans then lie on one
   /// line already, and moving it would stop the curve at the knot).
   double pull(int k, int neighbour) const
   {
-    const auto& through = this->KnotShape.StraightThrough;
-    int knot = std::max(k, neighbour);
-    if (this->Closed)
-    {
-      knot = wrapIndex(knot, this->Points);
-    }
-    const bool straight = knot >= 0 && knot < static_cast<int>(through.size()) && through[knot];
+    const bool straight =
+      this->entry(this->KnotShape.StraightThrough, std::max(k, neighbour), char(0)) != 0;
     return this->straightness(k) * (straight ? 1.0 - this->straightness(neighbour) : 1.0);
   }
   double Z(int i) const
@@ -861,12 +849,12 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       QQRKnotShape shape = given;
       shape.StraightThrough =
         discreteShape(data, context.Options.Tolerances, {}, context.CoordinateNoise).Collinear;
+      const std::vector<char>& through = shape.StraightThrough;
       std::vector<char> runEnd(n, 0);
       for (int i = 0; i < n; ++i)
       {
         const int before = extendedIndex(i - 1, n, data.Closed, Beyond::Clamp);
         const int after = extendedIndex(i + 1, n, data.Closed, Beyond::Clamp);
-        const auto& through = shape.StraightThrough;
         runEnd[i] = !through[i] && (through[before] || through[after]);
       }
       ShapeLadder ladder;
