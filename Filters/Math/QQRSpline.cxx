@@ -680,6 +680,22 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
       throw std::invalid_argument("qqr: local shape parameters must be finite (or NaN: the paper's)");
     }
   }
+  const std::vector<double>& straightness = knotShape.Straightness;
+  if (!straightness.empty() && static_cast<int>(straightness.size()) != spans)
+  {
+    throw std::invalid_argument("qqr: straightness needs one value per span (" +
+      std::to_string(spans) + "), got " + std::to_string(straightness.size()));
+  }
+  const auto outside = [](double s) { return !(s >= 0.0 && s <= 1.0); };
+  if (std::any_of(straightness.begin(), straightness.end(), outside))
+  {
+    throw std::invalid_argument("qqr: straightness must lie in [0, 1]");
+  }
+  if (!knotShape.StraightThrough.empty() && static_cast<int>(knotShape.StraightThrough.size()) != n)
+  {
+    throw std::invalid_argument("qqr: StraightThrough needs one flag per point (" +
+      std::to_string(n) + "), got " + std::to_string(knotShape.StraightThrough.size()));
+  }
   const QQRGeometry geometry(
     dh, n, closed, local, knotShape, construction == QQRConstruction::LocalInterpolation);
   QQRSpline spline(knots, closed);
@@ -693,7 +709,6 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     // one of them straightened it made the curve bend hard there (noisy
     // helices: 166 times the data's curvature for 6.7 with natural ends, and
     // 40% more violations left), and could make the system singular.
-    const std::vector<double>& straightness = knotShape.Straightness;
     auto straightened = [&](int first, int last) {
       const auto begin = straightness.begin();
       const int size = static_cast<int>(straightness.size());

@@ -1452,4 +1452,16 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
     std::invalid_argument);
   EXPECT_THROW(QQRSpline::make(QQRConstruction::ControlPolygon, points, knots, false, kappa, paper, QQRKnotShape{ { 0, 0, INFINITY, 0 }, {}, {} }),
     std::invalid_argument);
+  // Straightness: one value in [0, 1] per span; StraightThrough: one flag per point.
+  auto withStraightness = [&](std::vector<double> straightness, std::vector<char> through) {
+    QQRKnotShape shape;
+    shape.Straightness = std::move(straightness);
+    shape.StraightThrough = std::move(through);
+    return QQRSpline::make(QQRConstruction::Interpolation, points, knots, false, kappa, paper, shape);
+  };
+  EXPECT_NO_THROW(withStraightness({ 0, 1, 0.5 }, { 0, 0, 0, 0 }));
+  EXPECT_THROW(withStraightness({ 0, 1, 0.5, 0 }, {}), std::invalid_argument);
+  EXPECT_THROW(withStraightness({ 0, 1.5, 0 }, {}), std::invalid_argument);
+  EXPECT_THROW(withStraightness({ 0, NAN, 0 }, {}), std::invalid_argument);
+  EXPECT_THROW(withStraightness({}, { 0, 0, 0 }), std::invalid_argument);
 }
