@@ -36,11 +36,13 @@
  * that a few noise spikes do not squash (the plugin colours by it in
  * ParaView).
  * Interpolated lines whose points look noisy (a least squares keeps far
- * fewer knots than points) get one warning per run: their curvature and
- * torsion follow the noise, and Mode Approximate gives the curve's own. An
- * approximating family audits its curve against the polygon whose shape it
- * keeps rather than against the data. With VMTKArrayNames on, the frame is
- * also written as FrenetTangent, FrenetNormal and FrenetBinormal.
+ * fewer knots than points, and fewer than half the points sit on exactly
+ * straight runs, as designed points do) get one warning per run: their
+ * curvature and torsion follow the noise, and Mode Approximate gives the
+ * curve's own. An approximating family audits its curve against the
+ * polygon whose shape it keeps rather than against the data. With
+ * VMTKArrayNames on, the frame is also written as FrenetTangent,
+ * FrenetNormal and FrenetBinormal.
  *
  * The shape-preserving families' automatic modes (their default) raise the
  * shape parameter only on failing spans and never beyond bounds that keep

@@ -109,7 +109,8 @@ struct FittedPolyline
   double NoiseLevel = 0.0;
   /// Approximations: a span of the knots holds too few points to decide it (BuiltCurve::StarvedSpan).
   bool StarvedSpan = false;
-  /// Interpolations: the points look noisy to a least squares (looksNoisy):
+  /// Interpolations: the points look noisy to a least squares (looksNoisy)
+  /// and fewer than half sit on exactly straight runs (designed points):
   /// the curve's curvature and torsion follow the noise.
   bool LooksNoisy = false;
   SamplingPlan Plan;

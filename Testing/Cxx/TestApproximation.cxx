@@ -192,6 +192,49 @@ TEST(Approximation, CleanPointsOfUnevenSpacingDoNotLookNoisy)
   check(randomlySampled(helixAt, 0.0, 4.0 * M_PI, 150, 0.002 * 1.0, 6), true);
 }
 
+TEST(Approximation, DesignedStraightRunsDoNotLookNoisyButVoxelPathsDo)
+{
+  // An interpolation's noise verdict (FittedPolyline::LooksNoisy): a least
+  // squares cannot follow a staircase's corners either, and called its exact
+  // points noisy (the warning then told a tool path's user to approximate
+  // it). Points mostly inside exactly straight runs get no verdict; a helix
+  // traced through voxels (34% of its points on straight runs) and a noisy
+  // helix still look noisy.
+  QuinticFitOptions quintic;
+  auto interpolated = [&](const std::vector<Vec3>& points) {
+    return fitPolyline(points, FitOptions{}, tensionQuinticBuilder(quintic));
+  };
+  int calledNoisy = 0;
+  for (unsigned seed = 1; seed <= 6; ++seed)
+  {
+    for (const auto& [runs, steps] : { std::pair(5, 5), std::pair(4, 6), std::pair(6, 6) })
+    {
+      const std::vector<Vec3> stairs = staircase(runs, steps, seed);
+      CleanPolyline data;
+      data.Points = stairs;
+      calledNoisy += looksNoisy(stairs, computeKnots(data, Parameterization::ChordLength), false);
+      EXPECT_FALSE(interpolated(stairs).LooksNoisy)
+        << runs << " runs of " << steps << ", seed " << seed;
+    }
+    EXPECT_TRUE(interpolated(unevenNoisyHelixPoints(100, 0.005, seed)).LooksNoisy)
+      << "seed " << seed;
+  }
+  std::printf("the least squares alone calls %d of 18 staircases noisy\n", calledNoisy);
+  EXPECT_GT(calledNoisy, 0);
+  std::vector<Vec3> voxels;
+  for (int k = 0; k <= 20000; ++k)
+  {
+    const double t = 4.0 * M_PI * k / 20000.0;
+    const Vec3 onHelix(20.0 * std::cos(t), 20.0 * std::sin(t), 10.0 * t / (2.0 * M_PI));
+    const Vec3 voxel = onHelix.array().round().matrix();
+    if (voxels.empty() || voxel != voxels.back())
+    {
+      voxels.push_back(voxel);
+    }
+  }
+  EXPECT_TRUE(interpolated(voxels).LooksNoisy);
+}
+
 TEST(Approximation, NoSpanWithoutPoints)
 {
   // Two noisy clusters of 50 points, at parameters [0, 1] and [9, 10]: with
