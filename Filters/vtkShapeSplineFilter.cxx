@@ -645,9 +645,10 @@ std::vector<size_t> ReportFits(
   if (noisyLines > 0)
   {
     vtkWarningWithObjectMacro(self, << noisyLines << " line(s) interpolated through points that "
-                                    << "look noisy (a least squares keeps far fewer knots than "
-                                    << "points): their curvature and torsion follow the noise. "
-                                    << "Mode Approximate gives the curve's own.");
+                                    << "look noisy, or turn within a few points (a least squares "
+                                    << "keeps far fewer knots than points): measured points' "
+                                    << "curvature and torsion then follow the noise, and Mode "
+                                    << "Approximate gives the curve's own.");
   }
   if (!violatingLines.empty())
   {

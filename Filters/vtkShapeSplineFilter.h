@@ -37,10 +37,12 @@
  * ParaView).
  * Interpolated lines whose points look noisy (a least squares keeps far
  * fewer knots than points, and fewer than half the points sit on exactly
- * straight runs, as designed points do) get one warning per run: their
- * curvature and torsion follow the noise, and Mode Approximate gives the
- * curve's own. An approximating family audits its curve against the
- * polygon whose shape it keeps rather than against the data. With
+ * straight runs, as designed points do) get one warning per run: measured
+ * points' curvature and torsion follow the noise, and Mode Approximate gives
+ * the curve's own. Exact points that turn within a few points (a helix at
+ * 3.6 points a turn, a protein's C-alpha trace) look the same to the test.
+ * An approximating family audits its curve against the polygon whose shape
+ * it keeps rather than against the data. With
  * VMTKArrayNames on, the frame is also written as FrenetTangent,
  * FrenetNormal and FrenetBinormal.
  *

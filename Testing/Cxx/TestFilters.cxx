@@ -1874,6 +1874,50 @@ TEST(CurvatureBound, ACuspIsNamedInAWarning)
   }
 }
 
+TEST(NoisyPoints, InterpolatingThemWarnsOnceButNotOnAStaircase)
+{
+  // Two noisy helices (100 points, 0.5% of the radius, 16 a turn) and a
+  // clean 3D staircase (runs of 5 steps): one warning names the two noisy
+  // lines; the staircase's exact corners are no noise. Approximated, the
+  // helices need no warning.
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.005);
+  std::vector<Polyline> lines(2);
+  for (Polyline& helix : lines)
+  {
+    for (int i = 0; i < 100; ++i)
+    {
+      const double t = 2.0 * vtkMath::Pi() * i / 16.0;
+      helix.push_back(
+        { std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
+    }
+  }
+  Polyline stairs = { { 0, 0, 0 } };
+  for (int run = 0; run < 6; ++run)
+  {
+    for (int step = 0; step < 5; ++step)
+    {
+      Point next = stairs.back();
+      next[run % 3] += 0.5;
+      stairs.push_back(next);
+    }
+  }
+  const auto noisy = PolylinesData(lines);
+  lines.push_back(stairs);
+  const FilterRun interpolated = RunCubic(PolylinesData(lines));
+  EXPECT_EQ(CountMessages(interpolated.Warnings,
+              { "2 line(s) interpolated through points that look noisy", "Mode Approximate" }),
+    1)
+    << Joined(interpolated.Warnings);
+  EXPECT_EQ(CountMessages(RunCubic(PolylinesData({ stairs })).Warnings, { "look noisy" }), 0);
+  vtkNew<vtkTensionQuinticSplineFilter> approximation;
+  approximation->SetModeToApproximate();
+  approximation->SetInputData(noisy);
+  const FilterRun approximated = UpdateChecked(noisy, approximation, { approximation });
+  EXPECT_EQ(CountMessages(approximated.Warnings, { "look noisy" }), 0)
+    << Joined(approximated.Warnings);
+}
+
 TEST(TorsionColorRange, CentredOnZeroAndNotSquashedBySpikes)
 {
   const auto range = [](vtkPolyData* curve) {
