@@ -137,10 +137,6 @@ vtkSMPTools::Config ThreadsFor(int numberOfThreads)
   return vtkSMPTools::Config{ numberOfThreads, backend, false };
 }
 
-/// Curvature times the line's bounding box diagonal beyond which it is warned
-/// about (a circle through the box has about 2).
-constexpr double SuspectCurvature = 1e6;
-
 /// Lines of the input's points in order (Connect Points), named by their id.
 std::vector<LineWork> ConnectedLines(vtkPolyData* input, vtkDataArray* lineIds)
 {
@@ -914,16 +910,16 @@ void ReportCurvatureSpikes(
     const LineWork& line = lines[k];
     const double diagonal =
       line.Fit.Spline ? line.Fit.Scale * shapesplines::boundingBoxDiagonal(line.Fit.Data.Points) : 0.0;
-    if (line.LargestCurvature * diagonal > SuspectCurvature)
+    if (line.LargestCurvature * diagonal > shapesplines::CuspCurvature)
     {
       vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): curvature up to "
                                       << line.LargestCurvature << ", "
                                       << line.LargestCurvature * diagonal
                                       << " over its bounding box diagonal: a cusp or a kink, not "
-                                      << "the data's shape (an automatic mode may keep one within "
-                                      << "its bound, 1e3 times the data's largest discrete "
-                                      << "curvature). Mode Approximate, or the Generalized Cubic "
-                                      << "Spline's automatic mode, avoid it.");
+                                      << "the data's shape (an automatic mode keeps one only "
+                                      << "where the curve of its fixed parameters has it). Mode "
+                                      << "Approximate, or the Generalized Cubic Spline's automatic "
+                                      << "mode, avoid it.");
     }
   }
 }

@@ -18,7 +18,8 @@ namespace shapesplines
  * left: a curvature beyond CurvatureFactor times the reference polygon's
  * largest discrete (Menger) curvature (StraightRunCurvatureFactor when the
  * reference has collinear points: a straight run joined to a turn needs a
- * sharp bend), a speed |s'| below SpeedFraction of a span's chord over its
+ * sharp bend) or beyond CuspCurvature over the reference's bounding box
+ * diagonal, a speed |s'| below SpeedFraction of a span's chord over its
  * parameter length (a curve that nearly stops makes a cusp), or a span
  * farther from its segment of the reference polygon than Deviation times
  * the longest of that segment and its neighbours (a curve through the

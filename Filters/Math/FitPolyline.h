@@ -255,6 +255,11 @@ constexpr double LargestCoordinate = 1e300;
 /// audit says so), and sampling it all would take minutes for nothing.
 constexpr double RunawayLengthFactor = 100.0;
 
+/// A curvature this many times over the line's bounding box diagonal is a
+/// cusp or a kink, not the data's shape (a circle through the box has about
+/// 2): the filters warn about it, and no automatic mode raises one past it.
+constexpr double CuspCurvature = 1e6;
+
 /// Lines whose distinct points span less than this are refused: in the
 /// subnormal range their differences lose every digit.
 constexpr double SmallestExtent = 1e-300;

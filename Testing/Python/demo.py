@@ -220,8 +220,9 @@ for name, proxy in (("cubic (reference)", None),
                                       " / ".join("%.3g" % k for k in largest),
                                       " / ".join("%.3g" % (k / d) for k, d in zip(largest, data_curvature))))
 print("  (approximations are audited against their least-squares polygon, not the noisy points; the automatic")
-print("  modes may not raise the curvature beyond 1e3 (1e4 with straight runs) x the data's: where a family")
-print("  cannot remove a violation within that, it keeps its best curve and counts what is left)")
+print("  modes may not raise the curvature beyond 1e3 (1e4 with straight runs) x the data's, nor to a cusp (1e6")
+print("  over the line's bounding box diagonal): where a family cannot remove a violation within that, it keeps")
+print("  its best curve and counts what is left)")
 
 # =========================================================================== aorta-curvature-torsion.png
 # (Made before the render views: after a render view's screenshot, the charts in
