@@ -36,6 +36,7 @@
 #include <initializer_list>
 #include <iostream>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -192,6 +193,25 @@ inline Polyline Circle(double r, int count, const Point& center = { 0, 0, 0 })
     points.push_back(center + Point{ r * std::cos(angle), r * std::sin(angle), 0.0 });
   }
   return points;
+}
+
+/// Helices (cos t, sin t, t / 4) of count points, 16 a turn, with Gaussian
+/// noise of sigma on every coordinate.
+inline std::vector<Polyline> NoisyHelices(int lines, int count, double sigma, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::vector<Polyline> helices(lines);
+  for (Polyline& helix : helices)
+  {
+    for (int i = 0; i < count; ++i)
+    {
+      const double t = 2 * Pi * i / 16.0;
+      helix.push_back(
+        { std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
+    }
+  }
+  return helices;
 }
 
 /// Points origin + x u + y v of the planar points (x, y, 0).

@@ -1880,18 +1880,7 @@ TEST(NoisyPoints, InterpolatingThemWarnsOnceButNotOnAStaircase)
   // clean 3D staircase (runs of 5 steps): one warning names the two noisy
   // lines; the staircase's exact corners are no noise. Approximated, the
   // helices need no warning.
-  std::mt19937 random(7);
-  std::normal_distribution<double> noise(0.0, 0.005);
-  std::vector<Polyline> lines(2);
-  for (Polyline& helix : lines)
-  {
-    for (int i = 0; i < 100; ++i)
-    {
-      const double t = 2.0 * vtkMath::Pi() * i / 16.0;
-      helix.push_back(
-        { std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
-    }
-  }
+  std::vector<Polyline> lines = NoisyHelices(2, 100, 0.005, 7);
   Polyline stairs = { { 0, 0, 0 } };
   for (int run = 0; run < 6; ++run)
   {

@@ -426,19 +426,7 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
   // violations within the automatic mode's bounds; the generalized cubic's
   // tension removes them all. The warning names each line and a failing
   // criterion.
-  std::mt19937 random(5);
-  std::normal_distribution<double> noise(0.0, 0.005);
-  std::vector<Polyline> helices(2);
-  for (Polyline& helix : helices)
-  {
-    for (int i = 0; i < 200; ++i)
-    {
-      const double t = 2.0 * vtkMath::Pi() * i / 16.0;
-      helix.push_back(
-        { std::cos(t) + noise(random), std::sin(t) + noise(random), 0.25 * t + noise(random) });
-    }
-  }
-  const auto data = PolylinesData(helices);
+  const auto data = PolylinesData(NoisyHelices(2, 200, 0.005, 5));
   const FilterRun automatic = RunFilter<QQR>(data);
   vtkDataArray* left = CellArray(automatic.Output, "ShapeViolations");
   ASSERT_EQ(left->GetNumberOfTuples(), 2);
