@@ -42,9 +42,8 @@
  * the curve's own. Exact points that turn within a few points (a helix at
  * 3.6 points a turn, a protein's C-alpha trace) look the same to the test.
  * An approximating family audits its curve against the polygon whose shape
- * it keeps rather than against the data. With
- * VMTKArrayNames on, the frame is also written as FrenetTangent,
- * FrenetNormal and FrenetBinormal.
+ * it keeps rather than against the data. With VMTKArrayNames on, the frame
+ * is also written as FrenetTangent, FrenetNormal and FrenetBinormal.
  *
  * The shape-preserving families' automatic modes (their default) raise the
  * shape parameter only on failing spans and never beyond bounds that keep
