@@ -430,6 +430,52 @@ def shape_on_users_data(seed=7):
           "over the data's largest discrete curvature)")
 
 
+def helix_between_straight_runs(per_turn):
+    """Two turns of the helix (cos t, sin t, t / 4), per_turn points a turn,
+    entered and left along its tangent by straight runs of one turn's length
+    (a tool path's line into an arc; the curvature jumps at the joins). The
+    helix's spans are per_turn .. 3 per_turn - 1."""
+    a, b = 1.0, 0.25
+    c = np.hypot(a, b)
+    step = 2 * np.pi * c / per_turn
+    on_helix = lambda t: np.array([a * np.cos(t), a * np.sin(t), b * t])
+    tangent = lambda t: np.array([-a * np.sin(t), a * np.cos(t), b]) / c
+    end = 4 * np.pi
+    points = [on_helix(0) - tangent(0) * i * step for i in range(per_turn, 0, -1)]
+    points += [on_helix(2 * np.pi * i / per_turn) for i in range(2 * per_turn + 1)]
+    points += [on_helix(end) + tangent(end) * i * step for i in range(1, per_turn + 1)]
+    return np.array(points)
+
+
+def straight_runs_into_a_curve():
+    """Every family on straight runs entering a helix along its tangent, fixed
+    against default mode: violations, and after the first join the spans whose
+    curvature is more than 10% off the helix's and the largest curvature over
+    the helix's (the joins' reach; see README, what it does not do)."""
+    curvature = 1.0 / 1.0625
+    print("\nStraight runs into a helix (exact points; the curvature jumps at the joins): violations fixed / "
+          "default, spans after the first join more than 10% off the helix's curvature, largest curvature "
+          "over the helix's")
+    print("%-9s %9s %14s %16s %18s" % ("family", "per turn", "violations", "spans > 10%", "largest / helix's"))
+    for family, proxy, automatic in FAMILIES[1:]:
+        for per_turn in (16, 32, 64):
+            poly = to_polydata(helix_between_straight_runs(per_turn)[None])
+            figures = []
+            for properties in ({automatic: 0}, {}):
+                output, _ = fitted(proxy, poly, "Sequential", **properties)
+                data = output.GetPointData()
+                k = vtk_to_numpy(data.GetArray("Curvature"))
+                span = vtk_to_numpy(data.GetArray("SpanIndex"))
+                after = (span >= per_turn) & (span < 2 * per_turn)
+                off = np.unique(span[after & (np.abs(k - curvature) > 0.1 * curvature)])
+                helix = (span >= per_turn) & (span < 3 * per_turn)
+                figures.append((int(cell_array(output, "ShapeViolations").sum()), len(off),
+                                k[helix].max() / curvature))
+            print("%-9s %9d %14s %16s %18s" % (family, per_turn, "%d / %d" % (figures[0][0], figures[1][0]),
+                                                "%d / %d" % (figures[0][1], figures[1][1]),
+                                                "%.3g / %.3g" % (figures[0][2], figures[1][2])))
+
+
 def noisy_unevenly_spaced():
     """Noisy points at random parameters on helices, trefoils, Viviani's curves
     and growing spirals (Testing/Python/noisy_curves.py, the cases of
@@ -686,6 +732,7 @@ def main():
     if args.shape_only:
         automatic_cost()
         shape_on_users_data()
+        straight_runs_into_a_curve()
         noisy_unevenly_spaced()
         return
     if args.growth_only:
@@ -721,6 +768,7 @@ def main():
         return
     automatic_cost()
     shape_on_users_data()
+    straight_runs_into_a_curve()
     noisy_unevenly_spaced()
     threads_identical(to_polydata(helix_lines(2000, 50)))
     threads_by_default(args.lines)
