@@ -718,22 +718,23 @@ std::vector<Vec3> helixBetweenStraightRuns(int perTurn)
   return points;
 }
 
-/// Per span, the largest relative curvature and torsion errors against the
-/// helix of helixBetweenStraightRuns (spans off the helix: 0).
-std::vector<RelativeErrors> helixSpanErrors(const FittedPolyline& fit, int perTurn)
+/// The curvature and torsion of the helix of helixBetweenStraightRuns.
+constexpr double JoinedHelixCurvature = 1.0 / 1.0625, JoinedHelixTorsion = 0.25 / 1.0625;
+
+/// Per span, the largest relative curvature error against that helix
+/// (spans off the helix: 0).
+std::vector<double> helixSpanCurvatureErrors(const FittedPolyline& fit, int perTurn)
 {
-  const double curvature = 1.0 / 1.0625, torsion = 0.25 / 1.0625;
-  std::vector<RelativeErrors> errors(fit.Data.numberOfSpans());
+  std::vector<double> errors(fit.Data.numberOfSpans(), 0.0);
   const SampledCurve sampled = sampleFit(fit);
   for (int k = 0; k < sampled.Samples.size(); ++k)
   {
     const int span = sampled.Samples.Span[k];
     if (span >= perTurn && span < 3 * perTurn)
     {
-      const FrenetFrame& frame = sampled.Frames[k];
-      RelativeErrors& e = errors[span];
-      e.Curvature = std::max(e.Curvature, std::abs(frame.Curvature - curvature) / curvature);
-      e.Torsion = std::max(e.Torsion, std::abs(frame.Torsion - torsion) / torsion);
+      const double error =
+        std::abs(sampled.Frames[k].Curvature - JoinedHelixCurvature) / JoinedHelixCurvature;
+      errors[span] = std::max(errors[span], error);
     }
   }
   return errors;
@@ -758,13 +759,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeConvergesNextToStraightRuns)
       const std::vector<Vec3> points = helixBetweenStraightRuns(perTurn);
       const FittedPolyline fixed = fitPolyline(points, FitOptions{}, family.Fixed);
       const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
-      RelativeErrors away;
-      const std::vector<RelativeErrors> errors = helixSpanErrors(automatic, perTurn);
-      for (int span = perTurn + perTurn / 4; span < 3 * perTurn - perTurn / 4; ++span)
-      {
-        away.Curvature = std::max(away.Curvature, errors[span].Curvature);
-        away.Torsion = std::max(away.Torsion, errors[span].Torsion);
-      }
+      // The helix's spans a quarter turn or more from both joins (4 turns' spans in all).
+      const RelativeErrors away = interiorErrors(
+        automatic, JoinedHelixCurvature, JoinedHelixTorsion, perTurn + perTurn / 4);
       std::printf("%s, %d points a turn: violations %d -> %d, a quarter turn from the joins "
                   "curvature %.3g, torsion %.3g\n",
         family.Name, perTurn, fixed.Audit.violations(), automatic.Audit.violations(),
@@ -803,13 +800,13 @@ TEST(AutomaticShape, TheGeneralizedCubicAndQQRKeepAStraightRunsJoinLocal)
     const std::string name = family.Name;
     const FittedPolyline automatic =
       fitPolyline(helixBetweenStraightRuns(perTurn), FitOptions{}, family.Automatic);
-    const std::vector<RelativeErrors> errors = helixSpanErrors(automatic, perTurn);
+    const std::vector<double> errors = helixSpanCurvatureErrors(automatic, perTurn);
     int disturbed = 0;
     double largest = 0.0;
     for (int span = perTurn; span < 3 * perTurn; ++span)
     {
-      disturbed += span < 2 * perTurn && errors[span].Curvature > 0.1;
-      largest = std::max(largest, 1.0 + errors[span].Curvature);
+      disturbed += span < 2 * perTurn && errors[span] > 0.1;
+      largest = std::max(largest, 1.0 + errors[span]);
     }
     std::printf("%s: curvature off by more than 10%% on %d spans after the first join, "
                 "at most %.3g times the helix's\n",
