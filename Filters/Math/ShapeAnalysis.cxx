@@ -124,6 +124,25 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Coplanar[i] = flat;
     shape.Twisted[i] = !flat && significant;
   }
+  // A lone coplanar segment between segments twisted opposite ways is where
+  // the torsion passes through zero, sampled symmetrically about it (points
+  // of a smooth curve evenly spaced around its zero): a curve that twists on
+  // either side is not planar along it, so (iii) does not apply; (iv.2) on
+  // its neighbours still asks the sign to change within it.
+  for (int i = 0; i < spans; ++i)
+  {
+    const int before = i - 1, after = i + 1;
+    if (!data.Closed && (before < 0 || after >= spans))
+    {
+      continue;
+    }
+    const int b = (before + spans) % spans, a = after % spans;
+    if (shape.Coplanar[i] && shape.Twisted[b] && shape.Twisted[a] &&
+      shape.Torsion[b] * shape.Torsion[a] < 0)
+    {
+      shape.Coplanar[i] = 0;
+    }
+  }
   return shape;
 }
 

@@ -37,7 +37,9 @@ struct DiscreteShape
   std::vector<char> Collinear; ///< criterion (i) applies at this point
   std::vector<char> Convex;    ///< B_i != 0: criterion (ii.1) applies
   std::vector<double> Torsion; ///< per segment
-  std::vector<char> Coplanar;  ///< per segment: criterion (iii) applies
+  /// Per segment: criterion (iii) applies; not on a lone coplanar segment
+  /// between segments twisted opposite ways (the torsion changes sign there).
+  std::vector<char> Coplanar;
   std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies
 };
 

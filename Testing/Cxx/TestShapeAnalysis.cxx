@@ -120,6 +120,42 @@ TEST(DiscreteShape, CloseSamplesOfAHelixAreNotCoplanar)
   }
 }
 
+TEST(DiscreteShape, ALoneCoplanarSegmentBetweenOppositeTwistsIsATorsionSignChange)
+{
+  // Points evenly spaced about a zero of the torsion, r(t) = (t, t^2 / 2,
+  // t^4 / 4) at t = +-1/2, +-3/2, +-5/2: the middle four are coplanar
+  // (mirror images), the segments on either side twist opposite ways. No
+  // curve that twists on both sides is planar along the middle span: it is
+  // not coplanar, nor twisted (no criterion). Two such segments in a row
+  // stay coplanar (a planar stretch), as does a lone one between segments
+  // twisted the same way.
+  auto onCurve = [](double t) { return Vec3(t, t * t / 2.0, t * t * t * t / 4.0); };
+  std::vector<Vec3> points;
+  for (const double t : { -2.5, -1.5, -0.5, 0.5, 1.5, 2.5 })
+  {
+    points.push_back(onCurve(t));
+  }
+  const DiscreteShape crossing = discreteShape(cleanPolyline(points, false));
+  EXPECT_LT(crossing.Torsion[1], 0.0);
+  EXPECT_FALSE(crossing.Coplanar[2]);
+  EXPECT_FALSE(crossing.Twisted[2]);
+  EXPECT_GT(crossing.Torsion[3], 0.0);
+
+  // The last point moved into the middle four's plane: a planar stretch of
+  // two segments; mirrored through that plane: both sides twist one way.
+  const Vec3 normal = (points[2] - points[1]).cross(points[3] - points[2]).normalized();
+  const double offPlane = (points[5] - points[1]).dot(normal);
+  std::vector<Vec3> planarStretch = points, sameWay = points;
+  planarStretch[5] -= offPlane * normal;
+  sameWay[5] -= 2.0 * offPlane * normal;
+  const DiscreteShape stretch = discreteShape(cleanPolyline(planarStretch, false));
+  EXPECT_TRUE(stretch.Coplanar[2]);
+  EXPECT_TRUE(stretch.Coplanar[3]);
+  const DiscreteShape touching = discreteShape(cleanPolyline(sameWay, false));
+  ASSERT_GT(touching.Torsion[1] * touching.Torsion[3], 0.0);
+  EXPECT_TRUE(touching.Coplanar[2]);
+}
+
 TEST(DiscreteShape, TurnsWithinTheCoordinatesRoundingAreNoShape)
 {
   // A helix with one point doubled at 1e-6 of its size, off in a direction
