@@ -90,6 +90,24 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Convex[i] = !straight && significant;
   }
+  // A lone collinear point between turns opposite ways is an inflection,
+  // sampled symmetrically about it (points of a smooth curve evenly spaced
+  // around its inflection): the curve is not straight on the two spans
+  // around it, so (i) does not apply. A straight run has two collinear
+  // points in a row, or turns the same way at both ends.
+  for (int i = 0; i < n; ++i)
+  {
+    const int before = i - 1, after = i + 1;
+    if (!shape.Collinear[i] || (!data.Closed && (before < 1 || after > n - 2)))
+    {
+      continue;
+    }
+    const int b = (before + n) % n, a = after % n;
+    if (shape.Convex[b] && shape.Convex[a] && shape.Binormal[b].dot(shape.Binormal[a]) < 0)
+    {
+      shape.Collinear[i] = 0;
+    }
+  }
   for (int i = 0; i < spans; ++i)
   {
     const int before = (i - 1 + n) % n;

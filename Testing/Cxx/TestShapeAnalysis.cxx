@@ -156,6 +156,41 @@ TEST(DiscreteShape, ALoneCoplanarSegmentBetweenOppositeTwistsIsATorsionSignChang
   EXPECT_TRUE(touching.Coplanar[2]);
 }
 
+TEST(DiscreteShape, ALoneCollinearPointBetweenOppositeTurnsIsAnInflection)
+{
+  // y = x^3 at x = -1.5 ... 1.5: the points at -0.5, 0, 0.5 are collinear
+  // (odd symmetry) and the curve turns opposite ways on either side. No
+  // curve that bends on both sides is straight on the two spans around 0:
+  // (i) does not apply there. Two collinear points in a row (a straight
+  // run), or one between turns the same way (a square's side with its
+  // midpoint), stay collinear.
+  std::vector<Vec3> cubic;
+  for (int k = -3; k <= 3; ++k)
+  {
+    const double x = 0.5 * k;
+    cubic.emplace_back(x, x * x * x, 0.0);
+  }
+  const DiscreteShape inflection = discreteShape(cleanPolyline(cubic, false));
+  EXPECT_TRUE(inflection.Convex[2] && inflection.Convex[4]);
+  EXPECT_LT(inflection.Binormal[2].dot(inflection.Binormal[4]), 0.0);
+  EXPECT_FALSE(inflection.Collinear[3]);
+  EXPECT_FALSE(inflection.Convex[3]);
+
+  std::vector<Vec3> run = cubic;
+  run.insert(run.begin() + 4, Vec3(0.25, 0.0625, 0.0)); // on the line through -0.5, 0, 0.5
+  const DiscreteShape straight = discreteShape(cleanPolyline(run, false));
+  EXPECT_TRUE(straight.Collinear[3]);
+  EXPECT_TRUE(straight.Collinear[4]);
+
+  const std::vector<Vec3> square = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0),
+    Vec3(2, 2, 0), Vec3(1, 2, 0), Vec3(0, 2, 0), Vec3(0, 1, 0) };
+  const DiscreteShape sides = discreteShape(cleanPolyline(square, true));
+  for (const int midpoint : { 1, 3, 5, 7 })
+  {
+    EXPECT_TRUE(sides.Collinear[midpoint]) << midpoint;
+  }
+}
+
 TEST(DiscreteShape, TurnsWithinTheCoordinatesRoundingAreNoShape)
 {
   // A helix with one point doubled at 1e-6 of its size, off in a direction
