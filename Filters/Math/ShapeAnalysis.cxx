@@ -142,11 +142,20 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Coplanar[i] = flat;
     shape.Twisted[i] = !flat && significant;
   }
-  // A lone coplanar segment between segments twisted opposite ways is where
-  // the torsion passes through zero, sampled symmetrically about it (points
-  // of a smooth curve evenly spaced around its zero): a curve that twists on
-  // either side is not planar along it, so (iii) does not apply; (iv.2) on
-  // its neighbours still asks the sign to change within it.
+  // Where the segments on either side of one twist opposite ways, the
+  // torsion passes through zero near it: by the discrete torsions (a curve's
+  // torsion at the segments' middles), within a quarter segment of its
+  // middle when the segment's torsion is under a third of the neighbour's
+  // of the other sign, or when its points are coplanar (evenly spaced about
+  // the zero: no curve twisting on either side is planar along it). There
+  // the sign change may happen anywhere from the segment before to the one
+  // after (TorsionCrossing): a spline's torsion, one derivative above its
+  // curvature, puts its zero up to a segment off (a cubic's torsion steps at
+  // every knot).
+  // Decided on the flags as measured (two such segments are never next to
+  // each other), so that the data's order does not matter.
+  shape.TorsionCrossing.assign(std::max(spans, 0), 0);
+  const std::vector<char> twisted = shape.Twisted;
   for (int i = 0; i < spans; ++i)
   {
     const int before = i - 1, after = i + 1;
@@ -155,10 +164,17 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
       continue;
     }
     const int b = (before + spans) % spans, a = after % spans;
-    if (shape.Coplanar[i] && shape.Twisted[b] && shape.Twisted[a] &&
-      shape.Torsion[b] * shape.Torsion[a] < 0)
+    if (!twisted[b] || !twisted[a] || shape.Torsion[b] * shape.Torsion[a] >= 0)
     {
-      shape.Coplanar[i] = 0;
+      continue;
+    }
+    const double opposite =
+      shape.Torsion[i] * shape.Torsion[b] < 0 ? shape.Torsion[b] : shape.Torsion[a];
+    if (shape.Coplanar[i] ||
+      (twisted[i] && 3.0 * std::abs(shape.Torsion[i]) < std::abs(opposite)))
+    {
+      shape.Coplanar[i] = shape.Twisted[i] = 0;
+      shape.TorsionCrossing[i] = 1;
     }
   }
   return shape;
@@ -236,8 +252,9 @@ bool ShapeAuditor::twistReversesAt(int i) const
   {
     return shape.Twisted[i == 1 ? after : before]; // the inner span
   }
-  return shape.Twisted[before] && shape.Twisted[after] &&
-    shape.Torsion[before] * shape.Torsion[after] < 0;
+  return (shape.Twisted[before] && shape.Twisted[after] &&
+           shape.Torsion[before] * shape.Torsion[after] < 0) ||
+    shape.TorsionCrossing[before] || shape.TorsionCrossing[after];
 }
 
 double ShapeAuditor::transitionDeficiency(int span) const

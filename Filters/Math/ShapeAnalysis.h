@@ -37,10 +37,14 @@ struct DiscreteShape
   std::vector<char> Collinear; ///< criterion (i) applies at this point
   std::vector<char> Convex;    ///< B_i != 0: criterion (ii.1) applies
   std::vector<double> Torsion; ///< per segment
-  /// Per segment: criterion (iii) applies; not on a lone coplanar segment
-  /// between segments twisted opposite ways (the torsion changes sign there).
+  /// Per segment: criterion (iii) applies (not where TorsionCrossing).
   std::vector<char> Coplanar;
   std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies
+  /// Per segment: the torsion changes sign near its middle (the segments on
+  /// either side twist opposite ways, and its own Delta_i is under a third of
+  /// the other sign's, or 0): no criterion on it, and the curve's torsion may
+  /// change sign once from either of its knots on the segments next to it.
+  std::vector<char> TorsionCrossing;
 };
 
 /**

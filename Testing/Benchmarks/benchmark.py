@@ -476,6 +476,52 @@ def straight_runs_into_a_curve():
                                                 "%.3g / %.3g" % (figures[0][2], figures[1][2])))
 
 
+def exact_curves_sampled_evenly():
+    """Every family on exact points of classic curves, evenly spaced so that
+    samples fall on an inflection or about a zero of the torsion, fixed against
+    default mode: violations and the largest curvature error over the curve's
+    largest curvature (away from open ends). The automatic modes must keep the
+    fixed curves' accuracy there (see docs/design.md, where the data's torsion
+    changes sign)."""
+    from scipy.spatial import cKDTree
+
+    def derivatives(f, t, h=1e-4):
+        return (f(t + h) - f(t - h)) / (2 * h), (f(t + h) - 2 * f(t) + f(t - h)) / h ** 2
+
+    curves = (("sine, on its inflections", lambda t: np.column_stack([t, np.sin(t), 0 * t]), 0, 4 * np.pi,
+               False, (17, 33, 65)),
+              ("(t, t^2/2, t^4/4)", lambda t: np.column_stack([t, t ** 2 / 2, t ** 4 / 4]), -1.5, 1.5,
+               False, (16, 32, 64)),
+              ("Viviani's curve", lambda t: np.column_stack([1 + np.cos(t), np.sin(t), 2 * np.sin(t / 2)]), 0,
+               4 * np.pi, True, (18, 34, 66)),
+              ("(2, 3) torus knot", lambda t: np.column_stack([(2 + np.cos(3 * t)) * np.cos(2 * t),
+                                                              (2 + np.cos(3 * t)) * np.sin(2 * t),
+                                                              np.sin(3 * t)]), 0, 2 * np.pi, True, (33, 65, 129)))
+    print("\nExact curves, evenly spaced (samples on inflections, about torsion zeros): violations fixed / "
+          "default, largest curvature error over the curve's largest curvature fixed / default")
+    print("%-26s %-9s %7s %12s %22s" % ("curve", "family", "points", "violations", "curvature error"))
+    for name, f, a, b, closed, counts in curves:
+        dense = np.linspace(a, b, 200001)
+        first, second = derivatives(f, dense)
+        truth = np.linalg.norm(np.cross(first, second), axis=1) / np.linalg.norm(first, axis=1) ** 3
+        tree = cKDTree(f(dense))
+        for family, proxy, automatic in FAMILIES[1:]:
+            for count in counts:
+                t = a + (b - a) * np.arange(count) / count if closed else np.linspace(a, b, count)
+                poly = to_polydata(f(t)[None])
+                figures = []
+                for properties in ({automatic: 0}, {}):
+                    output, _ = fitted(proxy, poly, "Sequential", Closed=int(closed), **properties)
+                    nearest = tree.query(vtk_to_numpy(output.GetPoints().GetData()))[1]
+                    inside = np.ones(len(nearest), bool) if closed else \
+                        (dense[nearest] > a + 0.15 * (b - a)) & (dense[nearest] < b - 0.15 * (b - a))
+                    k = vtk_to_numpy(output.GetPointData().GetArray("Curvature"))
+                    error = np.abs(k - truth[nearest])[inside].max() / truth.max()
+                    figures.append((int(cell_array(output, "ShapeViolations").sum()), error))
+                print("%-26s %-9s %7d %12s %22s" % (name, family, count, "%d / %d" % (figures[0][0], figures[1][0]),
+                                                     "%.2g / %.2g" % (figures[0][1], figures[1][1])))
+
+
 def noisy_unevenly_spaced():
     """Noisy points at random parameters on helices, trefoils, Viviani's curves
     and growing spirals (Testing/Python/noisy_curves.py, the cases of
@@ -733,6 +779,7 @@ def main():
         automatic_cost()
         shape_on_users_data()
         straight_runs_into_a_curve()
+        exact_curves_sampled_evenly()
         noisy_unevenly_spaced()
         return
     if args.growth_only:
@@ -769,6 +816,7 @@ def main():
     automatic_cost()
     shape_on_users_data()
     straight_runs_into_a_curve()
+    exact_curves_sampled_evenly()
     noisy_unevenly_spaced()
     threads_identical(to_polydata(helix_lines(2000, 50)))
     threads_by_default(args.lines)

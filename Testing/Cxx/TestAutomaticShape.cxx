@@ -637,10 +637,13 @@ TEST(AutomaticShape, StepsStopNearWhatASpanNeeds)
 {
   // On smooth noisy data (helices and trefoils: no straight runs, no sharp
   // turns) the families that keep the shape take no more tension or degree
-  // than the violations need: the largest curvature stays within 150 times
+  // than the violations need: the largest curvature stays within 250 times
   // the data's largest discrete curvature, far inside the cusp bound of
   // 1e3. Steps of x4 in tension or x2 in degree overshot it (455 and 486
-  // times here; now 68 and 118).
+  // times here; now 68 and 198: the variable degree spline's search, a
+  // chaotic path on noisy points, took 118 before the audit let torsion
+  // change sign within a span of where the data put it, and 196 on the
+  // benchmark's users' data of other seeds).
   for (const Family& family : families())
   {
     const std::string name = family.Name;
@@ -658,7 +661,7 @@ TEST(AutomaticShape, StepsStopNearWhatASpanNeeds)
       const FittedPolyline automatic = fitPolyline(line.Points, FitOptions{}, family.Automatic);
       const double curvature = boundFigures(automatic).Curvature;
       largest = std::max(largest, curvature);
-      EXPECT_LE(curvature, 150.0) << name << ", " << line.Name;
+      EXPECT_LE(curvature, 250.0) << name << ", " << line.Name;
     }
     std::printf("%s: largest curvature over the data's %.3g\n", name.c_str(), largest);
   }
@@ -912,6 +915,109 @@ TEST(AutomaticShape, EveryFamilysDefaultModeConvergesThroughAnInflection)
       previous = error;
     }
     EXPECT_LT(previous, 5e-3) << family.Name;
+  }
+}
+
+namespace
+{
+/// The (2, 3) torus knot and its derivatives in t.
+std::array<Vec3, 4> torusKnot(double t)
+{
+  const double c2 = std::cos(2 * t), s2 = std::sin(2 * t);
+  const double c3 = std::cos(3 * t), s3 = std::sin(3 * t);
+  const double r = 2 + c3, r1 = -3 * s3, r2 = -9 * c3, r3 = 27 * s3;
+  return { Vec3(r * c2, r * s2, s3), Vec3(r1 * c2 - 2 * r * s2, r1 * s2 + 2 * r * c2, 3 * c3),
+    Vec3(r2 * c2 - 4 * r1 * s2 - 4 * r * c2, r2 * s2 + 4 * r1 * c2 - 4 * r * s2, -9 * s3),
+    Vec3(r3 * c2 - 6 * r2 * s2 - 12 * r1 * c2 + 8 * r * s2,
+      r3 * s2 + 6 * r2 * c2 - 12 * r1 * s2 - 8 * r * c2, -27 * c3) };
+}
+
+/// The largest curvature and torsion errors of a fit to the torus knot over
+/// its largest curvature and |torsion|, each sample against the knot's
+/// nearest point (of 2000, then Newton's method on the distance).
+RelativeErrors torusKnotErrors(const FittedPolyline& fit)
+{
+  constexpr int Table = 2000;
+  std::vector<Vec3> points(Table);
+  for (int i = 0; i < Table; ++i)
+  {
+    points[i] = torusKnot(2 * Pi * i / Table)[0];
+  }
+  auto curvatureTorsion = [](double t) {
+    const std::array<Vec3, 4> d = torusKnot(t);
+    const Vec3 normal = d[1].cross(d[2]);
+    return std::array<double, 2>{ normal.norm() / std::pow(d[1].norm(), 3),
+      normal.dot(d[3]) / normal.squaredNorm() };
+  };
+  double largestCurvature = 0.0, largestTorsion = 0.0;
+  for (int i = 0; i < Table; ++i)
+  {
+    const std::array<double, 2> values = curvatureTorsion(2 * Pi * i / Table);
+    largestCurvature = std::max(largestCurvature, values[0]);
+    largestTorsion = std::max(largestTorsion, std::abs(values[1]));
+  }
+  const SampledCurve sampled = sampleFit(fit);
+  RelativeErrors errors;
+  for (int k = 0; k < sampled.Samples.size(); ++k)
+  {
+    const Vec3 at = sampled.Samples.Values[k][0];
+    int nearest = 0;
+    for (int i = 1; i < Table; ++i)
+    {
+      nearest = (points[i] - at).squaredNorm() < (points[nearest] - at).squaredNorm() ? i : nearest;
+    }
+    double t = 2 * Pi * nearest / Table;
+    for (int step = 0; step < 4; ++step)
+    {
+      const std::array<Vec3, 4> d = torusKnot(t);
+      const Vec3 offset = d[0] - at;
+      t -= offset.dot(d[1]) / (d[1].squaredNorm() + offset.dot(d[2]));
+    }
+    const std::array<double, 2> exact = curvatureTorsion(t);
+    errors.Curvature = std::max(
+      errors.Curvature, std::abs(sampled.Frames[k].Curvature - exact[0]) / largestCurvature);
+    errors.Torsion =
+      std::max(errors.Torsion, std::abs(sampled.Frames[k].Torsion - exact[1]) / largestTorsion);
+  }
+  return errors;
+}
+} // namespace
+
+TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheFixedCurvesAccuracyNearTorsionZeros)
+{
+  // A torus knot evenly sampled (closed, 33 to 129 points): its torsion
+  // changes sign six times a turn, some zeros near a span's middle, where a
+  // spline's torsion (one derivative above its curvature; a cubic's steps at
+  // every knot) put its zero more than half a span off and the audit failed
+  // it there; the generalized cubic's and qqr's automatic modes then bent
+  // the curve (curvature errors 0.28-2.5 of the largest curvature at 33-65
+  // points, against the fixed curves' 0.029-0.11). The sign change may now
+  // happen within a span of where the data put it: every default mode keeps
+  // its fixed curve's accuracy.
+  for (const Family& family : families())
+  {
+    for (const int count : { 33, 64, 65, 129 })
+    {
+      std::vector<Vec3> points;
+      for (int i = 0; i < count; ++i)
+      {
+        points.push_back(torusKnot(2 * Pi * i / count)[0]);
+      }
+      FitOptions closed;
+      closed.Closed = true;
+      const FittedPolyline fixed = fitPolyline(points, closed, family.Fixed);
+      const FittedPolyline automatic = fitPolyline(points, closed, family.Automatic);
+      const RelativeErrors fixedErrors = torusKnotErrors(fixed);
+      const RelativeErrors errors = torusKnotErrors(automatic);
+      std::printf("%s, %d points: violations %d -> %d, curvature %.3g -> %.3g, torsion %.3g -> "
+                  "%.3g\n",
+        family.Name, count, fixed.Audit.violations(), automatic.Audit.violations(),
+        fixedErrors.Curvature, errors.Curvature, fixedErrors.Torsion, errors.Torsion);
+      EXPECT_TRUE(automatic.Audit.preserving()) << family.Name << ", " << count;
+      const std::string where = std::string(family.Name) + ", " + std::to_string(count);
+      EXPECT_LE(errors.Curvature, 1.5 * fixedErrors.Curvature + 1e-6) << where;
+      EXPECT_LE(errors.Torsion, 1.5 * fixedErrors.Torsion + 1e-6) << where;
+    }
   }
 }
 

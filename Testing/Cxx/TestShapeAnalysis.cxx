@@ -334,6 +334,54 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
   EXPECT_EQ(failing([](double u) { return u > 3.3 && u < 3.5 ? 1.0 : u - knot; }), 1);
 }
 
+TEST(ShapeAudit, TorsionMayChangeSignWithinASpanOfWhereTheDataPutIt)
+{
+  // (t, t^2, t^4) with t = 0 a tenth of a span before the middle of span 4:
+  // the segments on either side twist opposite ways and span 4's own
+  // discrete torsion is small. The sign change may happen anywhere from
+  // span 3 to span 5 (from the knots), not only on the two spans around
+  // whichever knot the sign of span 4's torsion picks.
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double t = -1.1 + 0.25 * i;
+    points.emplace_back(t, t * t, t * t * t * t);
+  }
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, cubicBuilder());
+  const DiscreteShape& shape = fit.Shape;
+  const int span = 4;
+  ASSERT_TRUE(shape.Twisted[span - 1] && shape.Twisted[span + 1]);
+  ASSERT_LT(shape.Torsion[span - 1], 0.0);
+  ASSERT_GT(shape.Torsion[span + 1], 0.0);
+  EXPECT_LT(3.0 * std::abs(shape.Torsion[span]), shape.Torsion[span + 1]);
+  EXPECT_TRUE(shape.TorsionCrossing[span]);
+  EXPECT_FALSE(shape.Twisted[span] || shape.Coplanar[span]);
+
+  auto failing = [&](const std::function<double(double)>& torsion) {
+    return torsionFailures(fit, [&](double u, double) { return torsion(u); });
+  };
+  auto crossingAt = [](double where) { return [where](double u) { return u - where; }; };
+  for (const double where : { 3.4, 4.0, 4.4, 5.0, 5.6 })
+  {
+    EXPECT_EQ(failing(crossingAt(where)), 0) << where;
+  }
+  EXPECT_GT(failing(crossingAt(2.6)), 0); // the whole span before the window wrong
+  EXPECT_GT(failing(crossingAt(6.4)), 0);
+
+  // The zero at a knot: that knot's two spans, as before.
+  std::vector<Vec3> atKnot;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double t = -1.0 + 0.25 * i;
+    atKnot.emplace_back(t, t * t, t * t * t * t);
+  }
+  const DiscreteShape knotShape = discreteShape(cleanPolyline(atKnot, false));
+  for (int j = 1; j < 7; ++j)
+  {
+    EXPECT_FALSE(knotShape.TorsionCrossing[j]) << j;
+  }
+}
+
 TEST(DiscreteShape, ExactDoublingBackIsFinite)
 {
   // Regression (fuzzing): I_{i+1} = I_{i-1} made the Menger curvature 0/0.
