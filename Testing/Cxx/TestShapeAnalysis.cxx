@@ -50,6 +50,31 @@ int torsionFailures(const FittedPolyline& fit, const std::function<double(double
   markKnots(samples, false);
   return failures(auditShape(fit.Data, fit.Shape, samples), ShapeCriterion::TorsionSignOnSpan);
 }
+
+/// torsionFailures of a torsion of u alone (u in spans from the first point).
+int failuresWithTorsion(const FittedPolyline& fit, const std::function<double(double)>& torsion)
+{
+  return torsionFailures(fit, [&](double u, double) { return torsion(u); });
+}
+
+/// A torsion that changes sign, from negative to positive, at u = where.
+std::function<double(double)> crossingAt(double where)
+{
+  return [where](double u) { return u - where; };
+}
+
+/// (t, t^2, t^4) at t = first + 0.25 i, i = 0..8: its torsion
+/// 48 t / |r' x r''|^2 changes sign at t = 0.
+std::vector<Vec3> quarticTwist(double first)
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double t = first + 0.25 * i;
+    points.emplace_back(t, t * t, t * t * t * t);
+  }
+  return points;
+}
 } // namespace
 
 TEST(DiscreteShape, HelixHasPositiveTorsionAndConvergingCurvature)
@@ -304,14 +329,8 @@ TEST(ShapeAudit, VanishingValuesAreNotSignChanges)
 
 TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
 {
-  // (t, t^2, t^4): torsion 48 t / |r' x r''|^2 changes sign at t = 0, point 4.
-  std::vector<Vec3> points;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double t = -1.0 + 0.25 * i;
-    points.emplace_back(t, t * t, t * t * t * t);
-  }
-  const FittedPolyline fit = fitPolyline(points, FitOptions{}, cubicBuilder());
+  // The torsion changes sign at point 4.
+  const FittedPolyline fit = fitPolyline(quarticTwist(-1.0), FitOptions{}, cubicBuilder());
   const DiscreteShape& shape = fit.Shape;
   const int knot = 4;
   for (int j = knot - 2; j <= knot + 1; ++j)
@@ -319,35 +338,25 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
     ASSERT_TRUE(shape.Twisted[j]) << j;
     ASSERT_EQ(shape.Torsion[j] > 0, j >= knot) << j; // a single change, at the knot
   }
-  // The curve's torsion as a function of u, in spans from the first point.
-  auto failing = [&](const std::function<double(double)>& torsion) {
-    return torsionFailures(fit, [&](double u, double) { return torsion(u); });
-  };
-  auto crossingAt = [](double where) { return [where](double u) { return u - where; }; };
-  EXPECT_EQ(failing(crossingAt(knot)), 0);       // Definition 1's own case
-  EXPECT_EQ(failing(crossingAt(knot - 0.6)), 0); // in the span before the knot
-  EXPECT_EQ(failing(crossingAt(knot + 0.6)), 0); // in the span after it
+  EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot)), 0);       // Definition 1's own case
+  EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot - 0.6)), 0); // in the span before the knot
+  EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot + 0.6)), 0); // in the span after it
   // A span too early: wrong after the crossing, and the whole span before the knot.
-  EXPECT_EQ(failing(crossingAt(knot - 1.4)), 2);
-  EXPECT_EQ(failing(crossingAt(knot + 1.4)), 2);
+  EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot - 1.4)), 2);
+  EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot + 1.4)), 2);
   // Right at both ends of the span before the knot, wrong in its middle: three changes.
-  EXPECT_EQ(failing([](double u) { return u > 3.3 && u < 3.5 ? 1.0 : u - knot; }), 1);
+  const auto backAndForth = [](double u) { return u > 3.3 && u < 3.5 ? 1.0 : u - knot; };
+  EXPECT_EQ(failuresWithTorsion(fit, backAndForth), 1);
 }
 
 TEST(ShapeAudit, TorsionMayChangeSignWithinASpanOfWhereTheDataPutIt)
 {
-  // (t, t^2, t^4) with t = 0 a tenth of a span before the middle of span 4:
-  // the segments on either side twist opposite ways and span 4's own
-  // discrete torsion is small. The sign change may happen anywhere from
-  // span 3 to span 5 (from the knots), not only on the two spans around
-  // whichever knot the sign of span 4's torsion picks.
-  std::vector<Vec3> points;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double t = -1.1 + 0.25 * i;
-    points.emplace_back(t, t * t, t * t * t * t);
-  }
-  const FittedPolyline fit = fitPolyline(points, FitOptions{}, cubicBuilder());
+  // The torsion's zero a tenth of a span before the middle of span 4: the
+  // segments on either side twist opposite ways and span 4's own discrete
+  // torsion is small. The sign change may happen anywhere from span 3 to
+  // span 5 (from the knots), not only on the two spans around whichever
+  // knot the sign of span 4's torsion picks.
+  const FittedPolyline fit = fitPolyline(quarticTwist(-1.1), FitOptions{}, cubicBuilder());
   const DiscreteShape& shape = fit.Shape;
   const int span = 4;
   ASSERT_TRUE(shape.Twisted[span - 1] && shape.Twisted[span + 1]);
@@ -357,25 +366,15 @@ TEST(ShapeAudit, TorsionMayChangeSignWithinASpanOfWhereTheDataPutIt)
   EXPECT_TRUE(shape.TorsionCrossing[span]);
   EXPECT_FALSE(shape.Twisted[span] || shape.Coplanar[span]);
 
-  auto failing = [&](const std::function<double(double)>& torsion) {
-    return torsionFailures(fit, [&](double u, double) { return torsion(u); });
-  };
-  auto crossingAt = [](double where) { return [where](double u) { return u - where; }; };
   for (const double where : { 3.4, 4.0, 4.4, 5.0, 5.6 })
   {
-    EXPECT_EQ(failing(crossingAt(where)), 0) << where;
+    EXPECT_EQ(failuresWithTorsion(fit, crossingAt(where)), 0) << where;
   }
-  EXPECT_GT(failing(crossingAt(2.6)), 0); // the whole span before the window wrong
-  EXPECT_GT(failing(crossingAt(6.4)), 0);
+  EXPECT_GT(failuresWithTorsion(fit, crossingAt(2.6)), 0); // the span before the window wrong
+  EXPECT_GT(failuresWithTorsion(fit, crossingAt(6.4)), 0);
 
   // The zero at a knot: that knot's two spans, as before.
-  std::vector<Vec3> atKnot;
-  for (int i = 0; i <= 8; ++i)
-  {
-    const double t = -1.0 + 0.25 * i;
-    atKnot.emplace_back(t, t * t, t * t * t * t);
-  }
-  const DiscreteShape knotShape = discreteShape(cleanPolyline(atKnot, false));
+  const DiscreteShape knotShape = discreteShape(cleanPolyline(quarticTwist(-1.0), false));
   for (int j = 1; j < 7; ++j)
   {
     EXPECT_FALSE(knotShape.TorsionCrossing[j]) << j;
