@@ -108,6 +108,31 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
       shape.Collinear[i] = 0;
     }
   }
+  // Likewise a point whose curvature is under half its neighbour's that
+  // turns the other way (Menger curvatures, free of the spacing): the
+  // curve's own inflection is within about a third of a span of it, and a
+  // spline (or the Menger curvature of unevenly spaced points) puts it up to
+  // a span off. No convexity criterion at it or on its two spans: the
+  // curvature may change sign anywhere on them.
+  const std::vector<char> convex = shape.Convex;
+  for (int i = 0; i < n; ++i)
+  {
+    const int before = i - 1, after = i + 1;
+    if (!convex[i] || (!data.Closed && (before < 1 || after > n - 2)))
+    {
+      continue;
+    }
+    const int b = (before + n) % n, a = after % n;
+    if (!convex[b] || !convex[a] || shape.Binormal[b].dot(shape.Binormal[a]) >= 0)
+    {
+      continue;
+    }
+    const int opposite = shape.Binormal[i].dot(shape.Binormal[b]) < 0 ? b : a;
+    if (2.0 * shape.Curvature[i] < shape.Curvature[opposite])
+    {
+      shape.Convex[i] = 0;
+    }
+  }
   for (int i = 0; i < spans; ++i)
   {
     const int before = (i - 1 + n) % n;

@@ -216,6 +216,29 @@ TEST(DiscreteShape, ALoneCollinearPointBetweenOppositeTurnsIsAnInflection)
   }
 }
 
+TEST(DiscreteShape, APointNextToAnInflectionHasNoConvexityToKeep)
+{
+  // y = x^3 at x = -1, -0.5, 0.05, 0.5, 1, 1.5: the point at 0.05 turns the
+  // way of the points after it, by far less than the point before it turns
+  // the other way; the curve's inflection is that close to it, and a spline
+  // may put it on either side. Points that turn well away from an
+  // inflection (at 0.5, 1) keep their convexity.
+  std::vector<Vec3> points;
+  for (const double x : { -1.0, -0.5, 0.05, 0.5, 1.0, 1.5 })
+  {
+    points.emplace_back(x, x * x * x, 0.0);
+  }
+  const DiscreteShape shape = discreteShape(cleanPolyline(points, false));
+  ASSERT_GT(shape.Binormal[2].dot(shape.Binormal[3]), 0.0);
+  ASSERT_LT(shape.Binormal[1].dot(shape.Binormal[2]), 0.0);
+  EXPECT_LT(2.0 * shape.Curvature[2], shape.Curvature[1]);
+  EXPECT_FALSE(shape.Convex[2]);
+  EXPECT_FALSE(shape.Collinear[2]);
+  EXPECT_TRUE(shape.Convex[1]);
+  EXPECT_TRUE(shape.Convex[3]);
+  EXPECT_TRUE(shape.Convex[4]);
+}
+
 TEST(DiscreteShape, TurnsWithinTheCoordinatesRoundingAreNoShape)
 {
   // A helix with one point doubled at 1e-6 of its size, off in a direction
