@@ -90,35 +90,22 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Convex[i] = !straight && significant;
   }
-  // A lone collinear point between turns opposite ways is an inflection,
-  // sampled symmetrically about it (points of a smooth curve evenly spaced
-  // around its inflection): the curve is not straight on the two spans
-  // around it, so (i) does not apply. A straight run has two collinear
-  // points in a row, or turns the same way at both ends.
-  for (int i = 0; i < n; ++i)
-  {
-    const int before = i - 1, after = i + 1;
-    if (!shape.Collinear[i] || (!data.Closed && (before < 1 || after > n - 2)))
-    {
-      continue;
-    }
-    const int b = (before + n) % n, a = after % n;
-    if (shape.Convex[b] && shape.Convex[a] && shape.Binormal[b].dot(shape.Binormal[a]) < 0)
-    {
-      shape.Collinear[i] = 0;
-    }
-  }
-  // Likewise a point whose curvature is under half its neighbour's that
-  // turns the other way (Menger curvatures, free of the spacing): the
-  // curve's own inflection is within about a third of a span of it, and a
-  // spline (or the Menger curvature of unevenly spaced points) puts it up to
-  // a span off. No convexity criterion at it or on its two spans: the
-  // curvature may change sign anywhere on them.
+  // Between points that turn opposite ways the curve has an inflection. A
+  // lone collinear point there is one sampled symmetrically (points of a
+  // smooth curve evenly spaced around it): the curve is not straight on its
+  // two spans, so (i) does not apply; a straight run has two collinear
+  // points in a row, or turns the same way at both ends. A point whose
+  // curvature is under half that of its neighbour turning the other way
+  // (Menger curvatures, free of the spacing) has the inflection within about
+  // a third of a span, and a spline (or the Menger curvature of unevenly
+  // spaced points) puts it up to a span off: no convexity criterion at it or
+  // on its two spans, the curvature may change sign anywhere on them.
+  // Decided on the flags as measured, so that the data's order does not matter.
   const std::vector<char> convex = shape.Convex;
   for (int i = 0; i < n; ++i)
   {
     const int before = i - 1, after = i + 1;
-    if (!convex[i] || (!data.Closed && (before < 1 || after > n - 2)))
+    if (!data.Closed && (before < 1 || after > n - 2))
     {
       continue;
     }
@@ -127,8 +114,13 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     {
       continue;
     }
+    if (shape.Collinear[i])
+    {
+      shape.Collinear[i] = 0;
+      continue;
+    }
     const int opposite = shape.Binormal[i].dot(shape.Binormal[b]) < 0 ? b : a;
-    if (2.0 * shape.Curvature[i] < shape.Curvature[opposite])
+    if (convex[i] && 2.0 * shape.Curvature[i] < shape.Curvature[opposite])
     {
       shape.Convex[i] = 0;
     }
