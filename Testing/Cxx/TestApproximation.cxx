@@ -224,8 +224,8 @@ TEST(Approximation, DesignedStraightRunsDoNotLookNoisyButVoxelPathsDo)
   std::vector<Vec3> voxels;
   for (int k = 0; k <= 20000; ++k)
   {
-    const double t = 4.0 * M_PI * k / 20000.0;
-    const Vec3 onHelix(20.0 * std::cos(t), 20.0 * std::sin(t), 10.0 * t / (2.0 * M_PI));
+    const double t = 4.0 * Pi * k / 20000.0;
+    const Vec3 onHelix(20.0 * std::cos(t), 20.0 * std::sin(t), 10.0 * t / (2.0 * Pi));
     const Vec3 voxel = onHelix.array().round().matrix();
     if (voxels.empty() || voxel != voxels.back())
     {

@@ -792,6 +792,33 @@ TEST(AutomaticShape, EveryFamilysDefaultModeConvergesNextToStraightRuns)
 
 namespace
 {
+/// Curvature and torsion of a curve from its first three derivatives (the
+/// closed forms the tests compare with).
+std::array<double, 2> exactCurvatureTorsion(
+  const Vec3& first, const Vec3& second, const Vec3& third)
+{
+  const Vec3 normal = first.cross(second);
+  return { normal.norm() / std::pow(first.norm(), 3), normal.dot(third) / normal.squaredNorm() };
+}
+
+/// The largest curvature error of a fit to y = sin x for x in [pi/2, 7 pi/2].
+double sineCurvatureError(const FittedPolyline& fit)
+{
+  const SampledCurve sampled = sampleFit(fit);
+  double error = 0.0;
+  for (int k = 0; k < sampled.Samples.size(); ++k)
+  {
+    const double x = sampled.Samples.Values[k][0].x();
+    if (x >= Pi / 2.0 && x <= 3.5 * Pi)
+    {
+      const double slope = std::cos(x);
+      const double curvature = std::abs(std::sin(x)) / std::pow(1.0 + slope * slope, 1.5);
+      error = std::max(error, std::abs(sampled.Frames[k].Curvature - curvature));
+    }
+  }
+  return error;
+}
+
 /// Evenly spaced points of r(t) = (t, t^2 / 2, t^4 / 4), t in [-3/2, 3/2],
 /// whose torsion 6 t / |r' x r''|^2 changes sign at t = 0; an even count puts
 /// t = 0 in the middle of a span, whose four points are coplanar.
@@ -820,10 +847,8 @@ RelativeErrors twistReversingErrors(const FittedPolyline& fit)
     {
       continue;
     }
-    const Vec3 first(1.0, t, t * t * t), second(0.0, 1.0, 3.0 * t * t), third(0.0, 0.0, 6.0 * t);
-    const Vec3 normal = first.cross(second);
-    const double curvature = normal.norm() / std::pow(first.norm(), 3);
-    const double torsion = normal.dot(third) / normal.squaredNorm();
+    const auto [curvature, torsion] = exactCurvatureTorsion(
+      Vec3(1.0, t, t * t * t), Vec3(0.0, 1.0, 3.0 * t * t), Vec3(0.0, 0.0, 6.0 * t));
     largestCurvature = std::max(largestCurvature, curvature);
     largestTorsion = std::max(largestTorsion, std::abs(torsion));
     errors.Curvature =
@@ -893,18 +918,7 @@ TEST(AutomaticShape, EveryFamilysDefaultModeConvergesThroughAnInflection)
         points.emplace_back(x, std::sin(x), 0.0);
       }
       const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
-      const SampledCurve sampled = sampleFit(automatic);
-      double error = 0.0;
-      for (int k = 0; k < sampled.Samples.size(); ++k)
-      {
-        const double x = sampled.Samples.Values[k][0].x();
-        if (x >= Pi / 2.0 && x <= 3.5 * Pi)
-        {
-          const double slope = std::cos(x);
-          const double curvature = std::abs(std::sin(x)) / std::pow(1.0 + slope * slope, 1.5);
-          error = std::max(error, std::abs(sampled.Frames[k].Curvature - curvature));
-        }
-      }
+      const double error = sineCurvatureError(automatic);
       std::printf("%s, %d points: violations %d, curvature %.3g\n", family.Name, count,
         automatic.Audit.violations(), error);
       EXPECT_TRUE(automatic.Audit.preserving()) << family.Name << ", " << count;
@@ -948,32 +962,16 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheFixedCurvesAccuracyNearInfle
         }
         std::sort(points.begin(), points.end(),
           [](const Vec3& a, const Vec3& b) { return a.x() < b.x(); });
-        double errors[2] = { 0.0, 0.0 };
-        int violations[2] = { 0, 0 };
-        int which = 0;
-        for (const CurveBuilder& builder : { family.Fixed, family.Automatic })
-        {
-          const FittedPolyline fit = fitPolyline(points, FitOptions{}, builder);
-          const SampledCurve sampled = sampleFit(fit);
-          for (int k = 0; k < sampled.Samples.size(); ++k)
-          {
-            const double x = sampled.Samples.Values[k][0].x();
-            if (x >= Pi / 2.0 && x <= 3.5 * Pi)
-            {
-              const double slope = std::cos(x);
-              const double curvature = std::abs(std::sin(x)) / std::pow(1.0 + slope * slope, 1.5);
-              errors[which] =
-                std::max(errors[which], std::abs(sampled.Frames[k].Curvature - curvature));
-            }
-          }
-          violations[which++] = fit.Audit.violations();
-        }
+        const FittedPolyline fixed = fitPolyline(points, FitOptions{}, family.Fixed);
+        const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
+        const double fixedError = sineCurvatureError(fixed);
+        const double error = sineCurvatureError(automatic);
         const std::string where = std::string(family.Name) + ", " + std::to_string(count) +
           ", seed " + std::to_string(seed);
         std::printf("%s: violations %d -> %d, curvature %.3g -> %.3g\n", where.c_str(),
-          violations[0], violations[1], errors[0], errors[1]);
-        EXPECT_EQ(violations[1], 0) << where;
-        EXPECT_LE(errors[1], 1.5 * errors[0] + 1e-6) << where;
+          fixed.Audit.violations(), automatic.Audit.violations(), fixedError, error);
+        EXPECT_EQ(automatic.Audit.violations(), 0) << where;
+        EXPECT_LE(error, 1.5 * fixedError + 1e-6) << where;
       }
     }
   }
@@ -1006,9 +1004,7 @@ RelativeErrors torusKnotErrors(const FittedPolyline& fit)
   }
   auto curvatureTorsion = [](double t) {
     const std::array<Vec3, 4> d = torusKnot(t);
-    const Vec3 normal = d[1].cross(d[2]);
-    return std::array<double, 2>{ normal.norm() / std::pow(d[1].norm(), 3),
-      normal.dot(d[3]) / normal.squaredNorm() };
+    return exactCurvatureTorsion(d[1], d[2], d[3]);
   };
   double largestCurvature = 0.0, largestTorsion = 0.0;
   for (int i = 0; i < Table; ++i)
