@@ -22,6 +22,15 @@ namespace
 using Local = Eigen::Matrix<double, 7, 1>;
 using SpanWeights = TensionQuinticSpline::SpanWeights;
 
+/// This line cannot be a tensioned quintic: a documented refusal, not a failure.
+[[noreturn]] void refuseKnots()
+{
+  throw std::domain_error("tension quintic spline: its abscissae X(t) are not increasing on "
+                          "these knots (Cravero, Manni & Sampoli, footnote 3; extremely uneven "
+                          "spacing); use the generalized cubic, another parameterization, or "
+                          "resample the line");
+}
+
 Local unit(int offset)
 {
   Local v = Local::Zero();
@@ -417,10 +426,8 @@ TensionQuinticSpline TensionQuinticSpline::fromWeights(const std::vector<double>
   if (!nonIncreasingSpans(weights, xi, closed, period).empty())
   {
     // The abscissae stayed non-increasing after every recovery (fuzz: spans from
-    // 1e25 to 1e37 in one line): this line cannot be a tensioned quintic.
-    throw std::domain_error("tension quintic spline: its abscissae X(t) are not increasing on "
-                            "these knots (Cravero, Manni & Sampoli, footnote 3; extremely uneven spacing); use "
-                            "the generalized cubic, another parameterization, or resample the line");
+    // 1e25 to 1e37 in one line).
+    refuseKnots();
   }
   std::vector<std::array<double, 6>> xBezier(n);
   std::vector<std::array<Vec3, 6>> cBezier(n);
@@ -566,7 +573,13 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
     }
     result.Increasing = bad.empty();
     result.KnotsMoved = *std::max_element(relax.begin(), relax.end()) > 0.0;
-    if (result.Increasing || !recover || result.Recoveries == MaxRecoveries)
+    if (recover && !result.Increasing && result.Recoveries == MaxRecoveries)
+    {
+      // Even X(t) = t has no solution (fuzz: spans 2e-12 of their neighbours',
+      // a singular knot system): no abscissae to build the curve on.
+      refuseKnots();
+    }
+    if (result.Increasing || !recover)
     {
       result.Weights = std::move(weights);
       return result;

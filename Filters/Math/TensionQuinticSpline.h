@@ -86,7 +86,9 @@ public:
    * near the bad spans move halfway towards those of the Greville abscissae
    * (which are increasing for any parameters), up to 12 times, the last time
    * all the way; if that fails too the parameters there are pulled halfway to
-   * 1; after 64 rounds all parameters are 1 and X(t) = t.
+   * 1; after 64 rounds all parameters are 1 and X(t) = t. Throws
+   * std::domain_error if recover is true and even that has no solution (knots
+   * so uneven that the knot system is singular).
    */
   static Abscissae solveAbscissae(const std::vector<double>& t,
     const QuinticParameters& parameters, bool closed, bool recover = true);

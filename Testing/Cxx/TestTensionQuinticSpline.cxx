@@ -292,6 +292,23 @@ TEST(TensionQuinticSpline, KnotSystemRecoversFromANonIncreasingSolution)
   EXPECT_LT(moved, 0.5);
 }
 
+TEST(TensionQuinticSpline, KnotsWhoseSystemIsSingularEvenWithoutTensionAreRefused)
+{
+  // Two spans 2e-12 long between spans of 1 (fuzz: coordinates from 1e-42 to
+  // 1e38 in one line): the knot system is singular for every parameter,
+  // X(t) = t included, so recovery has nothing left to try. The quintic's
+  // documented refusal, not a singular system met later in the interpolation.
+  const std::vector<double> t{ 0, 1, 2, 2 + 2.1e-12, 2 + 4.2e-12, 3, 4 };
+  const auto p = QuinticParameters::uniform(QuinticContinuity::C4, 7, 1.0);
+  EXPECT_THROW(TensionQuinticSpline::solveAbscissae(t, p, false), std::domain_error);
+  std::vector<Vec3> points;
+  for (size_t i = 0; i < t.size(); ++i)
+  {
+    points.emplace_back(t[i], std::sin(t[i]), 0.0);
+  }
+  EXPECT_THROW(TensionQuinticSpline::interpolate(points, t, p, false), std::domain_error);
+}
+
 TEST_P(Family, InterpolatesOpenAndClosedSpacePoints)
 {
   std::mt19937 rng(23);

@@ -36,6 +36,7 @@
 #include "VariableDegreeSpline.h"
 #include "Parameterization.h"
 #include "ShapeAnalysis.h"
+#include "SparseSolve.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -341,8 +342,11 @@ void extraChecksOn(const std::vector<ss::Vec3>& points, const ss::FittedPolyline
  * The curve stays with its data: the audit's PolygonDeviation is finite, a
  * span beyond MaximumPolygonDeviation is counted and makes the line not
  * shape-preserving; and where the output samples are the audit's (same
- * subdivisions of every span, an interpolation), the deviation measured
- * again on them, in data units, is the audit's.
+ * subdivisions of every span, an interpolation whose condition is trusted),
+ * the deviation measured again on them, in data units, is the audit's. The
+ * knot samples are the data points: an untrusted curve (fuzz: qqr with a
+ * condition estimate of 2e12 on spans 1e-12 of their neighbours) may miss
+ * them by far, which the audit sees and the knot samples do not.
  */
 void checkDeviation(
   const ss::FittedPolyline& fit, const ss::CurveSamples& samples, const ss::FitOptions& options)
@@ -354,7 +358,7 @@ void checkDeviation(
     "PolygonDeviation %g with %d straying spans", audit.PolygonDeviation, audit.StrayingSpans);
   CHECK(audit.StrayingSpans == 0 || (!audit.preserving() && audit.violations() > 0),
     "%d straying spans on a line called shape-preserving", audit.StrayingSpans);
-  if (!fit.interpolates() ||
+  if (!fit.interpolates() || fit.Spline->conditionEstimate() > ss::UntrustedCondition ||
     options.Sampling.SampleMode != ss::SamplingOptions::Mode::Subdivisions ||
     options.Sampling.Subdivisions != options.AuditSubdivisions ||
     std::any_of(fit.Plan.PerSpan.begin(), fit.Plan.PerSpan.end(),
