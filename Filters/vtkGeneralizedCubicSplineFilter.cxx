@@ -66,6 +66,7 @@ shapesplines::BuiltCurve vtkGeneralizedCubicSplineFilter::BuildCurve(
   options.Automatic = this->Automatic;
   options.Tension = this->Tension;
   options.MaxTension = std::max(this->MaxTension, this->Tension);
+  options.Ends = static_cast<shapesplines::GeneralizedCubicEnds>(this->EndCondition);
   return shapesplines::generalizedCubicBuilder(options)(context);
 }
 
@@ -76,6 +77,8 @@ void vtkGeneralizedCubicSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Automatic: " << (this->Automatic ? "On" : "Off") << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "MaxTension: " << this->MaxTension << "\n";
+  os << indent << "EndCondition: "
+     << (this->EndCondition == NATURAL_ENDS ? "Natural" : "Polynomial") << "\n";
   os << indent << "TensionArrayName: "
      << (this->TensionArrayName ? this->TensionArrayName : "(none)") << "\n";
 }

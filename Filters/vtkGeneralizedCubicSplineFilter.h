@@ -107,6 +107,26 @@ public:
   vtkGetMacro(MaxTension, double);
   ///@}
 
+  enum EndConditionType
+  {
+    NATURAL_ENDS = 0,
+    POLYNOMIAL_ENDS = 1
+  };
+
+  ///@{
+  /**
+   * Ends of open lines: POLYNOMIAL_ENDS (default; the second derivative at each
+   * end is that of the cubic through the four end points, so the curvature
+   * converges up to the ends) or NATURAL_ENDS (zero curvature at both ends, the
+   * paper's: an error of the size of the curvature there at any density).
+   * Closed lines have no ends.
+   */
+  vtkSetClampMacro(EndCondition, int, NATURAL_ENDS, POLYNOMIAL_ENDS);
+  vtkGetMacro(EndCondition, int);
+  void SetEndConditionToNatural() { this->SetEndCondition(NATURAL_ENDS); }
+  void SetEndConditionToPolynomial() { this->SetEndCondition(POLYNOMIAL_ENDS); }
+  ///@}
+
   ///@{
   /**
    * The name of an input point array giving a tension per point (empty or
@@ -138,6 +158,7 @@ protected:
   bool Automatic = true;
   double Tension = 0.0;
   double MaxTension = 1000.0;
+  int EndCondition = POLYNOMIAL_ENDS;
   char* TensionArrayName = nullptr;
 
 private:

@@ -74,8 +74,8 @@ void vtkVariableDegreeSplineFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Lambda: " << this->Lambda << "\n";
   os << indent << "ScaleLambdaWithDegree: " << (this->ScaleLambdaWithDegree ? "On" : "Off")
      << "\n";
-  os << indent << "EndCondition: " << (this->EndCondition == CLAMPED ? "Clamped" : "Natural")
-     << "\n";
+  const char* ends[] = { "Natural", "Clamped", "Polynomial" };
+  os << indent << "EndCondition: " << ends[this->EndCondition] << "\n";
   os << indent << "DegreeArrayName: "
      << (this->DegreeArrayName ? this->DegreeArrayName : "(none)") << "\n";
 }

@@ -57,7 +57,8 @@ public:
   enum EndConditionType
   {
     NATURAL = 0,
-    CLAMPED = 1
+    CLAMPED = 1,
+    POLYNOMIAL = 2
   };
 
   ///@{
@@ -145,17 +146,22 @@ public:
 
   ///@{
   /**
-   * Ends of open interpolating lines: NATURAL (default; zero curvature and
-   * torsion at the ends; lambda falls as Lambda (5 / k), not (5 / k)^3, at
-   * the two knots next to each end, which keeps the system well-conditioned
-   * at high degrees) or
-   * CLAMPED (the first and last three de Boor points coincide, so the ends
-   * depend on the end points only). Approximations are always clamped.
+   * Ends of open interpolating lines: POLYNOMIAL (default; s'' and s''' at
+   * each end are those of the quintic through the six end points, faded by
+   * (5 / k)^3 as the end degree k grows: curvature and torsion converge up to
+   * the ends), NATURAL (zero curvature and torsion at both ends, an error of
+   * the size of the curvature there at any density) or CLAMPED (the first
+   * and last three de Boor points coincide, so the ends depend on the end
+   * points only; neither converges at the ends). With Polynomial and Natural
+   * lambda falls as Lambda (5 / k), not (5 / k)^3, at the two knots next to
+   * each end, which keeps the system well-conditioned at high degrees.
+   * Approximations are always clamped.
    */
-  vtkSetClampMacro(EndCondition, int, NATURAL, CLAMPED);
+  vtkSetClampMacro(EndCondition, int, NATURAL, POLYNOMIAL);
   vtkGetMacro(EndCondition, int);
   void SetEndConditionToNatural() { this->SetEndCondition(NATURAL); }
   void SetEndConditionToClamped() { this->SetEndCondition(CLAMPED); }
+  void SetEndConditionToPolynomial() { this->SetEndCondition(POLYNOMIAL); }
   ///@}
 
   ///@{
@@ -192,7 +198,7 @@ protected:
   double MaxDegree = 1000.0;
   double Lambda = 1.0;
   bool ScaleLambdaWithDegree = true;
-  int EndCondition = NATURAL;
+  int EndCondition = POLYNOMIAL;
   char* DegreeArrayName = nullptr;
 
 private:

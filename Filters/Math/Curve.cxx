@@ -1,5 +1,7 @@
 #include "Curve.h"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -85,5 +87,36 @@ std::vector<double> knotSpacings(const std::vector<double>& knots, const std::st
     }
   }
   return h;
+}
+
+std::array<Vec3, 3> polynomialEndDerivatives(
+  const std::vector<Vec3>& points, const std::vector<double>& knots, bool start, int count)
+{
+  const int n = static_cast<int>(points.size());
+  const int m = std::min(n, count);
+  Eigen::MatrixXd vandermonde(m, m);
+  Eigen::MatrixXd values(m, 3);
+  const int end = start ? 0 : n - 1;
+  // In u = (x - x_end) / scale, within [-1, 1]: a well-conditioned Vandermonde matrix.
+  const double scale = knots[start ? m - 1 : n - m] - knots[end];
+  for (int r = 0; r < m; ++r)
+  {
+    const int i = start ? r : n - 1 - r;
+    const double u = (knots[i] - knots[end]) / scale;
+    for (int c = 0; c < m; ++c)
+    {
+      vandermonde(r, c) = std::pow(u, c);
+    }
+    values.row(r) = points[i].transpose();
+  }
+  const Eigen::MatrixXd c = vandermonde.colPivHouseholderQr().solve(values);
+  std::array<Vec3, 3> derivatives{ Vec3::Zero(), Vec3::Zero(), Vec3::Zero() };
+  double factorial = 1.0;
+  for (int order = 1; order <= 3 && order < m; ++order)
+  {
+    factorial *= order;
+    derivatives[order - 1] = factorial * c.row(order).transpose() / std::pow(scale, order);
+  }
+  return derivatives;
 }
 } // namespace shapesplines

@@ -286,6 +286,13 @@ double gaussLegendre(const F& f, double a, double b)
 /// The spacings h_i = knots[i + 1] - knots[i]; throws std::invalid_argument
 /// "<family>: knots must increase strictly" unless each is positive and finite.
 std::vector<double> knotSpacings(const std::vector<double>& knots, const std::string& family);
+
+/// Derivatives 1, 2 and 3 (in the knot parameter; zero above the degree) at
+/// one end of an open line of the polynomial through its `count` points
+/// nearest that end (all of them if fewer): the end conditions that converge
+/// at the order of a spline of degree count - 1.
+std::array<Vec3, 3> polynomialEndDerivatives(
+  const std::vector<Vec3>& points, const std::vector<double>& knots, bool start, int count);
 } // namespace shapesplines
 
 #endif

@@ -281,7 +281,8 @@ GeneralizedCubicSpline::GeneralizedCubicSpline(std::vector<double> knots, bool c
 }
 
 GeneralizedCubicSpline GeneralizedCubicSpline::interpolate(const std::vector<Vec3>& points,
-  const std::vector<double>& knots, bool closed, const std::vector<SpaceKernel>& kernels)
+  const std::vector<double>& knots, bool closed, const std::vector<SpaceKernel>& kernels,
+  GeneralizedCubicEnds ends)
 {
   const int n = static_cast<int>(points.size());
   const int spans = closed ? n : n - 1;
@@ -320,9 +321,16 @@ GeneralizedCubicSpline GeneralizedCubicSpline::interpolate(const std::vector<Vec
   }
   if (!closed)
   {
-    // Natural ends, scaled like the other rows so that pivoting keeps them.
+    // M at the ends, zero (natural) or the end cubic's, scaled like the
+    // other rows so that pivoting keeps them.
     entries.emplace_back(0, 0, g[0]);
     entries.emplace_back(n - 1, n - 1, f[spans - 1]);
+    if (ends == GeneralizedCubicEnds::Polynomial)
+    {
+      rhs.row(0) = g[0] * polynomialEndDerivatives(points, knots, true, 4)[1].transpose();
+      rhs.row(n - 1) =
+        f[spans - 1] * polynomialEndDerivatives(points, knots, false, 4)[1].transpose();
+    }
   }
   GeneralizedCubicSpline spline(knots, closed);
   const Eigen::MatrixX3d moments = n == 2 && !closed
@@ -425,7 +433,7 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
         kernels.emplace_back(options.Kind, raisedTimes(tension[k], levels[k], raise));
       }
       return std::make_unique<GeneralizedCubicSpline>(GeneralizedCubicSpline::interpolate(
-        context.Data.Points, context.Knots, context.Data.Closed, kernels));
+        context.Data.Points, context.Knots, context.Data.Closed, kernels, options.Ends));
     };
     // The polynomial kind has no tension to raise.
     return fixedOrAutomatic(options.Automatic && options.Kind != SpaceKind::Polynomial, context,

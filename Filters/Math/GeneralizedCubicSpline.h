@@ -83,20 +83,34 @@ double deCasteljau(const SpaceKernel& kernel, const std::array<double, 4>& b, do
 std::vector<std::array<double, 4>> bezierFromDeBoor(const std::vector<double>& knots,
   const std::vector<SpaceKernel>& kernels, const std::vector<double>& deBoor);
 
+/// End conditions of an open generalized cubic through its points.
+enum class GeneralizedCubicEnds : int
+{
+  /// s'' = 0 at both ends (the paper's): an error of the size of the
+  /// curvature at the ends, at any density.
+  Natural = 0,
+  /// s'' at each end is that of the cubic through the four end points: the
+  /// curvature converges up to the ends (second order, as inside). As a
+  /// span's tension grows its ends' second derivatives act ever more
+  /// locally, so a tensioned end span still tends to its chord.
+  Polynomial = 1
+};
+
 /**
  * A C2 curve that is, on each span, a combination of 1, t, u_k(t), v_k(t)
  * with the span's own kind and tension (t = (x - x_k) / h_k). Interpolation
  * solves for the second derivatives at the knots, a tridiagonal (cyclic for
  * closed curves) diagonally dominant system: the spline of Costantini &
  * Manni's generalized cubic B-splines (generalized cubics) that interpolates
- * the data, with natural ends.
+ * the data, with natural or polynomial ends.
  */
 class GeneralizedCubicSpline final : public Curve
 {
 public:
   /// kernels: one per span (points.size() - 1 open, points.size() closed).
   static GeneralizedCubicSpline interpolate(const std::vector<Vec3>& points,
-    const std::vector<double>& knots, bool closed, const std::vector<SpaceKernel>& kernels);
+    const std::vector<double>& knots, bool closed, const std::vector<SpaceKernel>& kernels,
+    GeneralizedCubicEnds ends = GeneralizedCubicEnds::Natural);
 
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
   /// "Tension" per span (the degree for VariableDegree).
@@ -120,6 +134,7 @@ struct GeneralizedCubicOptions
   double Tension = 0.0;      ///< starting (automatic) or fixed tension
   double MaxTension = 1000.0;
   int MaxRounds = 64;
+  GeneralizedCubicEnds Ends = GeneralizedCubicEnds::Polynomial; ///< of open lines
 };
 
 /// The tension after one more round of the automatic mode (0 stays 0 only for Polynomial).

@@ -268,32 +268,6 @@ std::array<Eigen::Matrix<double, 1, 6>, 2> endRows(const SpanWeights& w, bool st
   return { 5.0 * (w.row(5) - w.row(4)), 20.0 * (w.row(5) - 2.0 * w.row(4) + w.row(3)) };
 }
 
-/// s'(x) and s''(x) at one end of the polynomial through the (up to) six end points.
-std::pair<Vec3, Vec3> polynomialEndDerivatives(
-  const std::vector<Vec3>& points, const std::vector<double>& x, bool start)
-{
-  const int n = static_cast<int>(points.size());
-  const int m = std::min(n, 6);
-  Eigen::MatrixXd vandermonde(m, m);
-  Eigen::MatrixXd values(m, 3);
-  const int end = start ? 0 : n - 1;
-  const double scale = x[start ? m - 1 : n - m] - x[end];
-  for (int r = 0; r < m; ++r)
-  {
-    const int i = start ? r : n - 1 - r;
-    const double u = (x[i] - x[end]) / scale;
-    for (int c = 0; c < m; ++c)
-    {
-      vandermonde(r, c) = std::pow(u, c);
-    }
-    values.row(r) = points[i].transpose();
-  }
-  const Eigen::MatrixXd c = vandermonde.colPivHouseholderQr().solve(values);
-  const Vec3 first = c.row(1).transpose() / scale;
-  const Vec3 second = m > 2 ? Vec3(2.0 * c.row(2).transpose() / (scale * scale)) : Vec3::Zero();
-  return { first, second };
-}
-
 /// Strictly increasing Bezier abscissae on every span (hence X' > 0): the
 /// spans where that fails.
 std::vector<int> nonIncreasingSpans(const std::vector<SpanWeights>& weights,
@@ -660,11 +634,11 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
       const QuinticParameters& p = abscissae.Parameters;
       const double w = std::min(
         { 1.0, p.Gamma[knot], p.Continuity == QuinticContinuity::C3 ? p.Lambda[knot] : 1.0 });
-      const auto polynomial = polynomialEndDerivatives(points, knots, start);
+      const auto polynomial = polynomialEndDerivatives(points, knots, start, 6);
       const Vec3 chord = start ? Vec3((points[1] - points[0]) / (knots[1] - knots[0]))
                                : Vec3((points[n] - points[n - 1]) / (knots[n] - knots[n - 1]));
-      const Vec3 first = w * polynomial.first + (1.0 - w) * chord;
-      const Vec3 second = w * polynomial.second;
+      const Vec3 first = w * polynomial[0] + (1.0 - w) * chord;
+      const Vec3 second = w * polynomial[1];
       const int row = start ? count : count + 2;
       addRow(a, row, rows[0], base, n, false);
       rhs.row(row) = (first * xd[0]).transpose();

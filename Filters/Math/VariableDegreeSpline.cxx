@@ -355,17 +355,26 @@ VariableDegreeSpline VariableDegreeSpline::interpolate(const std::vector<Vec3>& 
     }
     else
     {
-      // s'' = s''' = 0 at both ends, each row scaled to a largest entry of 1.
+      // s'' and s''' at both ends: zero (natural) or the end quintic's, each
+      // row scaled to a largest entry of 1 (derivatives in the local v: h^r
+      // times those in u).
       for (const int end : { 0, 1 })
       {
         const int span = end == 0 ? 0 : spans - 1;
         const auto basis = pseudoBernstein(e.degree(span), e.degree(span + 1), end);
         const auto net = spanWeights(e, span);
+        const double h = knots[span + 1] - knots[span];
+        const double fade = std::pow(LowestVariableDegree / e.degree(end == 0 ? 0 : spans), 3);
+        const auto polynomial = ends == VariableDegreeEnds::Polynomial
+          ? polynomialEndDerivatives(points, knots, end == 0, 6)
+          : std::array<Vec3, 3>{ Vec3::Zero(), Vec3::Zero(), Vec3::Zero() };
         for (const int r : { 2, 3 })
         {
           const Weights w = derivativeWeights(basis, net, r);
           const int row = end == 0 ? r - 2 : last - 3 + r;
-          addRow(entries, row, w, span, 1.0 / w.cwiseAbs().maxCoeff(), column);
+          const double scale = 1.0 / w.cwiseAbs().maxCoeff();
+          addRow(entries, row, w, span, scale, column);
+          rhs.row(row) = (scale * fade * std::pow(h, r) * polynomial[r - 1]).transpose();
         }
       }
     }
@@ -490,8 +499,9 @@ double raisedDegree(double degree, double maxDegree)
 
 namespace
 {
-/// The parameters of the options for the given degrees; naturalEnds: lambda
-/// falls as 5 / k at the two knots next to each end (see VariableDegreeOptions).
+/// The parameters of the options for the given degrees; naturalEnds (or
+/// polynomial ends, the same system): lambda falls as 5 / k at the two knots
+/// next to each end (see VariableDegreeOptions).
 VariableDegreeParameters parametersFor(
   const std::vector<double>& degrees, const VariableDegreeOptions& options, bool naturalEnds)
 {
@@ -540,7 +550,7 @@ BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOption
     const std::vector<double> degrees = degreesAt(startDegrees, levels, data.Closed, options.MaxDegree);
     return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::interpolate(data.Points,
       context.Knots, data.Closed,
-      parametersFor(degrees, options, !data.Closed && options.Ends == VariableDegreeEnds::Natural),
+      parametersFor(degrees, options, !data.Closed && options.Ends != VariableDegreeEnds::Clamped),
       options.Ends));
   };
   return fixedOrAutomatic(options.Automatic, context, data, ladder);

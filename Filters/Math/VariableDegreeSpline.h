@@ -42,7 +42,14 @@ enum class VariableDegreeEnds : int
   Natural = 0,
   /// D_-2 = D_-1 = D_0 and D_m+2 = D_m+1 = D_m: the ends depend on the end
   /// data only (the paper's "very simple" ends); well-conditioned at any degree.
-  Clamped = 1
+  Clamped = 1,
+  /// s'' and s''' at each end are those of the quintic through the six end
+  /// points, times (5 / k)^3 for the end knot's degree k: at degree 5 the
+  /// curvature and torsion converge up to the ends (natural and clamped ends
+  /// put an error of the size of the curvature there, at any density), and
+  /// as the degree grows they fade to the natural ends of the straight
+  /// limit. The same system as Natural, with a right-hand side.
+  Polynomial = 2
 };
 
 /// Degrees k_i >= 5 and tensions lambda_i > 0, one per knot (closed curves:
@@ -125,7 +132,7 @@ enum class VariableDegreeMode : int
 struct VariableDegreeOptions
 {
   VariableDegreeMode Mode = VariableDegreeMode::Interpolate;
-  VariableDegreeEnds Ends = VariableDegreeEnds::Natural;
+  VariableDegreeEnds Ends = VariableDegreeEnds::Polynomial;
   /// Raise degrees only at knots of spans that fail the shape audit, from
   /// Degree, until none fails or MaxDegree is reached.
   bool Automatic = true;
@@ -134,7 +141,7 @@ struct VariableDegreeOptions
   /// degree 200 at the knots where it ends to stay straight within 1e-3.
   double MaxDegree = 1000.0;
   /// lambda_i = Lambda (5 / k_i)^3 when ScaleLambdaWithDegree, else Lambda;
-  /// with natural ends the two knots next to each end take Lambda (5 / k_i),
+  /// with natural or polynomial ends the two knots next to each end take Lambda (5 / k_i),
   /// so that s'' = s''' = 0 there stays well-posed (condition 770 instead of
   /// 1.7e8 with all degrees 200) while the end spans still tend to their
   /// chords (with Lambda kept there, a random polyline's span 2 kept a

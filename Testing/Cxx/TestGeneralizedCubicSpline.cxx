@@ -492,6 +492,38 @@ TEST(GeneralizedCubicSpline, PolynomialKindIsTheClassicalNaturalCubic)
     1e-13);
 }
 
+TEST(GeneralizedCubicSpline, PolynomialEndsReproduceACubicCurve)
+{
+  // A cubic curve on uneven knots: the cubic through the four end points is
+  // the curve itself, so its s'' is the curve's and the polynomial kind with
+  // polynomial ends is the curve, to rounding; natural ends are not (s'' = 0
+  // where the curve's is 2 and more).
+  std::vector<double> knots;
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 9; ++i)
+  {
+    const double t = -1.0 + 2.0 * i / 9.0 + (i % 2 == 0 ? 0.0 : 0.07);
+    knots.push_back(t);
+    points.emplace_back(t, t * t, t * t * t - t);
+  }
+  const std::vector<SpaceKernel> kernels(9, SpaceKernel(SpaceKind::Polynomial, 0.0));
+  const auto polynomial = GeneralizedCubicSpline::interpolate(
+    points, knots, false, kernels, GeneralizedCubicEnds::Polynomial);
+  const auto natural = GeneralizedCubicSpline::interpolate(points, knots, false, kernels);
+  double polynomialError = 0.0, naturalError = 0.0;
+  for (int k = 0; k <= 900; ++k)
+  {
+    const double t = knots.front() + (knots.back() - knots.front()) * k / 900.0;
+    const Vec3 second(0.0, 2.0, 6.0 * t);
+    polynomialError = std::max(polynomialError, (polynomial.evaluate(t, 2)[2] - second).norm());
+    naturalError = std::max(naturalError, (natural.evaluate(t, 2)[2] - second).norm());
+  }
+  std::printf("cubic curve: largest s'' error %.3g with polynomial ends, %.3g natural\n",
+    polynomialError, naturalError);
+  EXPECT_LT(polynomialError, 1e-10);
+  EXPECT_GT(naturalError, 1.0);
+}
+
 TEST(GeneralizedCubicSpline, InfiniteTensionTendsToThePolygon)
 {
   const std::vector<Vec3> points = akima();

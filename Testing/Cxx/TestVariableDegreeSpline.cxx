@@ -319,6 +319,38 @@ TEST(VariableDegreeSpline, InterpolatesOpenClosedAndClampedWithRandomDegrees)
   }
 }
 
+TEST(VariableDegreeSpline, PolynomialEndsReproduceAQuinticCurve)
+{
+  // Degree 5 and tension 1 is the C4 quintic spline: with the end quintic's
+  // s'' and s''' (the curve's own for a quintic curve) it is the curve, to
+  // rounding, on uneven knots; natural ends are not.
+  std::vector<double> u;
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 11; ++i)
+  {
+    const double t = -1.0 + 2.0 * i / 11.0 + (i % 3 == 1 ? 0.05 : 0.0);
+    u.push_back(t);
+    points.emplace_back(t, t * t * t * t * t - t * t, t * t * t);
+  }
+  const auto p = uniformParameters(u.size(), 5.0);
+  const auto polynomial =
+    VariableDegreeSpline::interpolate(points, u, false, p, VariableDegreeEnds::Polynomial);
+  const auto natural =
+    VariableDegreeSpline::interpolate(points, u, false, p, VariableDegreeEnds::Natural);
+  double polynomialError = 0.0, naturalError = 0.0;
+  for (int k = 0; k <= 1100; ++k)
+  {
+    const double t = u.front() + (u.back() - u.front()) * k / 1100.0;
+    const Vec3 second(0.0, 20.0 * t * t * t - 2.0, 6.0 * t);
+    polynomialError = std::max(polynomialError, (polynomial.evaluate(t, 2)[2] - second).norm());
+    naturalError = std::max(naturalError, (natural.evaluate(t, 2)[2] - second).norm());
+  }
+  std::printf("quintic curve: largest s'' error %.3g with polynomial ends, %.3g natural\n",
+    polynomialError, naturalError);
+  EXPECT_LT(polynomialError, 1e-8);
+  EXPECT_GT(naturalError, 1.0);
+}
+
 TEST(VariableDegreeSpline, NaturalEndsNeedTensionAtTheEndKnots)
 {
   // All degrees 200, lambda = (5/200)^3: the curve near an end hardly depends
@@ -434,6 +466,60 @@ TEST(VariableDegreeSpline, HelixCurvatureAndTorsionConverge)
     previousCurvature = errors.Curvature;
     previousTorsion = errors.Torsion;
   }
+}
+
+TEST(VariableDegreeSpline, PolynomialEndsConvergeUpToTheEndsAndFadeAsTheEndDegreeGrows)
+{
+  // The whole open line, ends included: natural ends (s'' = s''' = 0) leave
+  // an error of the size of the curvature and torsion there at any density;
+  // the end quintic's s'' and s''' converge at fourth order, like the inside.
+  VariableDegreeOptions natural = Options(false);
+  natural.Ends = VariableDegreeEnds::Natural;
+  double previousCurvature = 1.0, previousTorsion = 1.0;
+  for (const int perTurn : { 8, 16, 32 })
+  {
+    const std::vector<Vec3> points = helix(perTurn, 2);
+    const RelativeErrors errors = interiorErrors(Fit(points, Options(false)), 0.4, 0.2, 0);
+    const RelativeErrors naturalErrors = interiorErrors(Fit(points, natural), 0.4, 0.2, 0);
+    const double curvatureOrder = std::log2(previousCurvature / errors.Curvature);
+    const double torsionOrder = std::log2(previousTorsion / errors.Torsion);
+    std::printf("open helix, %d points per turn, whole line: polynomial ends curvature %.3g, "
+                "torsion %.3g (orders %.2f, %.2f); natural ends %.3g, %.3g\n",
+      perTurn, errors.Curvature, errors.Torsion, curvatureOrder, torsionOrder,
+      naturalErrors.Curvature, naturalErrors.Torsion);
+    EXPECT_GT(naturalErrors.Curvature, 0.5) << perTurn;
+    EXPECT_GT(naturalErrors.Torsion, 0.5) << perTurn;
+    if (perTurn > 8)
+    {
+      EXPECT_GT(curvatureOrder, 3.0) << perTurn;
+      EXPECT_GT(torsionOrder, 3.0) << perTurn;
+    }
+    previousCurvature = errors.Curvature;
+    previousTorsion = errors.Torsion;
+  }
+  EXPECT_LT(previousCurvature, 1e-3);
+  EXPECT_LT(previousTorsion, 1e-2);
+
+  // At degree 200 the end derivatives fade by (5 / 200)^3: the same system
+  // and condition as natural ends, nearly the same curve, whose end spans
+  // still tend to their chords.
+  const auto [points, u] = randomOpenData(20, 0.5, 1);
+  natural.Degree = 200.0;
+  const FittedPolyline fit = Fit(points, Options(false, 200.0));
+  const FittedPolyline naturalFit = Fit(points, natural);
+  const double diagonal = boundingBoxDiagonal(fit.Data.Points);
+  double apart = 0.0;
+  for (int k = 0; k <= 2000; ++k)
+  {
+    const double t = fit.Knots.front() + (fit.Knots.back() - fit.Knots.front()) * k / 2000.0;
+    const Vec3 difference = fit.Spline->evaluate(t, 0)[0] - naturalFit.Spline->evaluate(t, 0)[0];
+    apart = std::max(apart, difference.norm());
+  }
+  std::printf("degree 200: polynomial and natural ends %.3g of the diagonal apart; condition "
+              "estimates %.3g and %.3g\n",
+    apart / diagonal, fit.Spline->conditionEstimate(), naturalFit.Spline->conditionEstimate());
+  EXPECT_LT(apart, 1e-3 * diagonal);
+  EXPECT_LT(fit.Spline->conditionEstimate(), 2e3);
 }
 
 TEST(VariableDegreeSpline, ApproximationReproducesACurveOfItsSpace)
