@@ -114,10 +114,11 @@ Options of fit:
                            gencubic  C2 generalized cubic, automatic tension
                            quintic   C3/C4 tensioned quintic, automatic tension
                            vdps      C3 variable degree spline, automatic degrees
-                           qqr       C2 qqr B-spline-like curve, local interpolation
+                           qqr       C2 qqr B-spline-like curve through the points
                                      (or --mode approximate: points = control polygon)
   --end-condition NAME   cubic: not-a-knot (default), natural or clamped;
-                         vdps: natural (default) or clamped
+                         gencubic: polynomial (default) or natural;
+                         vdps: polynomial (default), natural or clamped
   --kind NAME            gencubic: exponential (default), trigonometric,
                          variable-degree or polynomial
   --tension T            gencubic: starting tension (fixed with --fixed);
@@ -126,7 +127,9 @@ Options of fit:
   --fixed                gencubic, quintic, vdps, qqr: Automatic off (fixed
                          tension, gamma, degrees or exponents)
   --continuity C         quintic: c4 (default) or c3
-  --mode M               quintic, qqr: interpolate (default) or approximate;
+  --mode M               quintic: interpolate (default) or approximate;
+                         qqr: interpolate (default), approximate or local
+                         (the paper's local interpolation: curvature 3x off);
                          vdps: interpolate (default), approximate (the local
                          scheme), approximate-global or approximate-local
   --knots N              approximate: number of knots, at most half the points;
@@ -1231,6 +1234,10 @@ vtkSmartPointer<vtkShapeSplineFilter> GeneralizedCubicFilter(Arguments& args)
   filter->SetAutomatic(!args.Flag("fixed"));
   SET_FROM_OPTION(args, filter, "tension", Tension);
   SET_FROM_OPTION(args, filter, "max-tension", MaxTension);
+  filter->SetEndCondition(Choice(args, "end-condition", "polynomial",
+    { { "polynomial", vtkGeneralizedCubicSplineFilter::POLYNOMIAL_ENDS },
+      { "natural", vtkGeneralizedCubicSplineFilter::NATURAL_ENDS } },
+    "gencubic"));
   return filter;
 }
 
@@ -1257,8 +1264,9 @@ vtkSmartPointer<vtkShapeSplineFilter> VariableDegreeFilter(Arguments& args)
       { "approximate", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL },
       { "approximate-global", vtkVariableDegreeSplineFilter::APPROXIMATE_GLOBAL },
       { "approximate-local", vtkVariableDegreeSplineFilter::APPROXIMATE_LOCAL } }));
-  filter->SetEndCondition(Choice(args, "end-condition", "natural",
-    { { "natural", vtkVariableDegreeSplineFilter::NATURAL },
+  filter->SetEndCondition(Choice(args, "end-condition", "polynomial",
+    { { "polynomial", vtkVariableDegreeSplineFilter::POLYNOMIAL },
+      { "natural", vtkVariableDegreeSplineFilter::NATURAL },
       { "clamped", vtkVariableDegreeSplineFilter::CLAMPED } },
     "vdps"));
   SET_FROM_OPTION(args, filter, "knots", NumberOfKnots);
@@ -1274,7 +1282,8 @@ vtkSmartPointer<vtkShapeSplineFilter> QQRFilter(Arguments& args)
   auto filter = vtkSmartPointer<vtkQQRSplineFilter>::New();
   filter->SetMode(Choice(args, "mode", "interpolate",
     { { "interpolate", vtkQQRSplineFilter::INTERPOLATE },
-      { "approximate", vtkQQRSplineFilter::APPROXIMATE } },
+      { "approximate", vtkQQRSplineFilter::APPROXIMATE },
+      { "local", vtkQQRSplineFilter::LOCAL_INTERPOLATION } },
     "qqr"));
   filter->SetAutomatic(!args.Flag("fixed"));
   SET_FROM_OPTION(args, filter, "alpha", Alpha);

@@ -196,6 +196,29 @@ qqr = read_csv(temp("akima-qqr.csv"))
 check(code == 0 and "shape violations" in out and qqr["Alpha"].max() == 4,
       "--family qqr: local interpolation, Alpha written", out.strip().splitlines()[0] if out.strip() else err)
 
+code, out, err = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("helix-qqr.csv"),
+                     "--family", "qqr", "--fixed")
+code2, out2, err2 = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("helix-qqr-local.csv"),
+                        "--family", "qqr", "--fixed", "--mode", "local")
+solved, local = read_csv(temp("helix-qqr.csv")), read_csv(temp("helix-qqr-local.csv"))
+atPoints = local["Curvature"][::10] if code2 == 0 else None  # 10 samples a span: the points
+check(code == 0 and code2 == 0 and abs(np.median(solved["Curvature"]) - 0.4) < 0.02
+      and np.median(atPoints) > 2.5 * 0.4,
+      "--family qqr interpolates (helix curvature 0.4); --mode local is the paper's, about 3x at the points",
+      "median curvature %.4g, local at the points %.4g" % (np.median(solved["Curvature"]), np.median(atPoints))
+      if code == 0 and code2 == 0 else err + err2)
+
+code, out, err = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("helix-gencubic.csv"),
+                     "--family", "gencubic")
+code2, out2, err2 = run("fit", os.path.join(args.data, "helix.vtp"), "-o", temp("helix-gencubic-natural.csv"),
+                        "--family", "gencubic", "--end-condition", "natural")
+ends, natural = read_csv(temp("helix-gencubic.csv")), read_csv(temp("helix-gencubic-natural.csv"))
+check(code == 0 and code2 == 0 and abs(ends["Curvature"][0] - 0.4) < 0.1 and natural["Curvature"][0] < 0.01,
+      "--family gencubic: polynomial ends by default (end curvature near the helix's 0.4), "
+      "--end-condition natural gives 0 there",
+      "end curvature %.4g and %.4g" % (ends["Curvature"][0], natural["Curvature"][0])
+      if code == 0 and code2 == 0 else err + err2)
+
 # ---------------------------------------------------------------------------- audit
 code, out, err = run("audit", temp("two.csv"), temp("two-csv.csv"))
 rows = [l for l in out.splitlines() if l.startswith("line ")]
@@ -228,7 +251,9 @@ cases = [
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--mode", "smooth"), 1, "--mode must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--degree", "4"), 1, "--degree must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "vdps", "--end-condition", "not-a-knot"), 1,
-     "--end-condition must be natural or clamped"),
+     "--end-condition must be polynomial, natural or clamped for vdps"),
+    (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "gencubic", "--end-condition", "clamped"), 1,
+     "--end-condition must be polynomial or natural for gencubic"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "qqr", "--alpha", "1"), 1, "--alpha must be"),
     (("fit", temp("two.csv"), "-o", temp("x.vtp"), "--family", "qqr", "--z", "2"), 1, "--z must be"),
     (("fit", temp("two.csv")), 1, "needs -o"),
