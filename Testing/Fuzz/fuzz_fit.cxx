@@ -121,12 +121,12 @@ struct Input
 {
   ss::FitOptions Options;
   ss::CubicEndCondition Ends = ss::CubicEndCondition::NotAKnot;
-  /// 0: the cubic; 1: the qqr local interpolation, automatic; 2: the
-  /// variable degree spline (by the end byte:
-  /// automatic natural, automatic clamped, fixed degree 40); 3: the C4
-  /// tensioned quintic, automatic; 4-7: the
-  /// generalized cubic, automatic exponential, trigonometric and variable
-  /// degree, and fixed exponential tension 50.
+  /// 0: the cubic; 1: the qqr interpolation, automatic; 2: the variable
+  /// degree spline (by the end byte: automatic with polynomial ends,
+  /// automatic clamped, fixed degree 40 with natural ends); 3: the C4
+  /// tensioned quintic, automatic; 4-7: the generalized cubic, automatic
+  /// exponential, trigonometric and variable degree (polynomial ends), and
+  /// fixed exponential tension 50 with natural ends.
   int Family = 0;
   std::vector<ss::Vec3> Points;
 };
@@ -461,7 +461,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   {
     ss::VariableDegreeOptions variable;
     const int choice = static_cast<int>(ends);
-    variable.Ends = choice == 1 ? ss::VariableDegreeEnds::Clamped : ss::VariableDegreeEnds::Natural;
+    const ss::VariableDegreeEnds variableEnds[] = { ss::VariableDegreeEnds::Polynomial,
+      ss::VariableDegreeEnds::Clamped, ss::VariableDegreeEnds::Natural };
+    variable.Ends = variableEnds[choice];
     variable.Automatic = choice != 2;
     variable.Degree = choice == 2 ? 40.0 : 5.0;
     build = ss::variableDegreeBuilder(variable);
@@ -478,6 +480,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     generalized.Kind = kinds[input.Family - 4];
     generalized.Automatic = input.Family != 7;
     generalized.Tension = input.Family == 7 ? 50.0 : 0.0;
+    if (input.Family == 7)
+    {
+      generalized.Ends = ss::GeneralizedCubicEnds::Natural;
+    }
     build = ss::generalizedCubicBuilder(generalized);
   }
 
