@@ -90,6 +90,21 @@ struct RelativeErrors
   double Torsion = 0.0;
 };
 
+/// The largest |s''(t) - second(t)| at 1001 evenly spaced parameters from
+/// the curve's first knot to its last.
+template <class SecondDerivative>
+double largestSecondDerivativeError(const Curve& curve, SecondDerivative second)
+{
+  double largest = 0.0;
+  for (int k = 0; k <= 1000; ++k)
+  {
+    const double t =
+      curve.firstParameter() + (curve.lastParameter() - curve.firstParameter()) * k / 1000.0;
+    largest = std::max(largest, (curve.evaluate(t, 2)[2] - second(t)).norm());
+  }
+  return largest;
+}
+
 /// Largest relative curvature and torsion errors of samples whose span lies
 /// at least `margin` spans away from both ends.
 inline RelativeErrors interiorErrors(
