@@ -185,10 +185,23 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     {
       continue;
     }
-    const double opposite =
-      shape.Torsion[i] * shape.Torsion[b] < 0 ? shape.Torsion[b] : shape.Torsion[a];
-    if (shape.Coplanar[i] ||
-      (twisted[i] && 3.0 * std::abs(shape.Torsion[i]) < std::abs(opposite)))
+    // The neighbour twisting the other way, and on this segment's own side
+    // its neighbour and the one after it where they twist its way: on
+    // unevenly spaced points the zero can lie a segment further on than
+    // the opposite neighbour says, while the own side's torsion grows.
+    const bool oppositeBefore = shape.Torsion[i] * shape.Torsion[b] < 0;
+    double scale = std::abs(shape.Torsion[oppositeBefore ? b : a]);
+    const int step = oppositeBefore ? 1 : -1;
+    for (const int own : { i + step, i + 2 * step })
+    {
+      const int k = (own % spans + spans) % spans;
+      if ((data.Closed || (own >= 0 && own < spans)) && twisted[k] &&
+        shape.Torsion[k] * shape.Torsion[i] > 0)
+      {
+        scale = std::max(scale, std::abs(shape.Torsion[k]));
+      }
+    }
+    if (shape.Coplanar[i] || (twisted[i] && 3.0 * std::abs(shape.Torsion[i]) < scale))
     {
       shape.Coplanar[i] = shape.Twisted[i] = 0;
       shape.TorsionCrossing[i] = 1;

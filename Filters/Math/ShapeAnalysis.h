@@ -40,10 +40,11 @@ struct DiscreteShape
   /// Per segment: criterion (iii) applies (not where TorsionCrossing).
   std::vector<char> Coplanar;
   std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies
-  /// Per segment: the torsion changes sign near its middle (the segments on
-  /// either side twist opposite ways, and its own Delta_i is under a third of
-  /// the other sign's, or 0): no criterion on it, and the curve's torsion may
-  /// change sign once from either of its knots on the segments next to it.
+  /// Per segment: the torsion changes sign near it (the segments on either
+  /// side twist opposite ways, and its own Delta_i is 0, or under a third of
+  /// the other sign's or of the largest of its own sign within two segments on
+  /// its side): no criterion on it, and the curve's torsion may change sign
+  /// once from either of its knots on the segments next to it.
   std::vector<char> TorsionCrossing;
 };
 
