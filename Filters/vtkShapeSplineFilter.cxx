@@ -334,7 +334,7 @@ vtkSmartPointer<Array> Renamed(Array* source, const char* name)
 }
 
 /// Where an audit fails, criterion by criterion: "torsion sign on span at
-/// spans 3, 7, ...; convexity at knot at knot 5" (at most a few places each).
+/// spans 3, 7, ...; convexity at knot 5" (at most a few places each).
 std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
 {
   constexpr int ShownPlaces = 4;
@@ -350,8 +350,10 @@ std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
     const bool atKnot = criterion == shapesplines::ShapeCriterion::ConvexityAtKnot ||
       criterion == shapesplines::ShapeCriterion::TorsionSignAtKnot ||
       criterion == shapesplines::ShapeCriterion::Collinearity;
-    text << (k > 0 ? "; " : "") << shapesplines::shapeCriterionName(criterion) << " at "
-         << (atKnot ? "knot" : "span") << (end - k > 1 ? "s " : " ");
+    const std::string name = shapesplines::shapeCriterionName(criterion);
+    const bool namesItsPlace = name.size() > 8 && name.compare(name.size() - 8, 8, " at knot") == 0;
+    text << (k > 0 ? "; " : "") << name << (namesItsPlace ? "" : (atKnot ? " at knot" : " at span"))
+         << (end - k > 1 ? "s " : " ");
     for (size_t j = k; j < end && j < k + ShownPlaces; ++j)
     {
       text << (j > k ? ", " : "") << audit.Where[j].Where;
