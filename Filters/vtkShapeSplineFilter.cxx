@@ -347,12 +347,13 @@ std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
     {
       ++end;
     }
-    const bool atKnot = criterion == shapesplines::ShapeCriterion::ConvexityAtKnot ||
-      criterion == shapesplines::ShapeCriterion::TorsionSignAtKnot ||
-      criterion == shapesplines::ShapeCriterion::Collinearity;
-    const std::string name = shapesplines::shapeCriterionName(criterion);
-    const bool namesItsPlace = name.size() > 8 && name.compare(name.size() - 8, 8, " at knot") == 0;
-    text << (k > 0 ? "; " : "") << name << (namesItsPlace ? "" : (atKnot ? " at knot" : " at span"))
+    // "convexity at knot" and "torsion sign at knot" already say where.
+    const bool namedAtKnot = criterion == shapesplines::ShapeCriterion::ConvexityAtKnot ||
+      criterion == shapesplines::ShapeCriterion::TorsionSignAtKnot;
+    const char* place = namedAtKnot ? ""
+      : criterion == shapesplines::ShapeCriterion::Collinearity ? " at knot"
+                                                                 : " at span";
+    text << (k > 0 ? "; " : "") << shapesplines::shapeCriterionName(criterion) << place
          << (end - k > 1 ? "s " : " ");
     for (size_t j = k; j < end && j < k + ShownPlaces; ++j)
     {
