@@ -1,5 +1,7 @@
 #include "ShapeAnalysis.h"
 
+#include "ExtendedIndex.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -194,7 +196,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const int step = oppositeBefore ? 1 : -1;
     for (const int own : { i + step, i + 2 * step })
     {
-      const int k = (own % spans + spans) % spans;
+      const int k = wrapIndex(own, spans);
       if ((data.Closed || (own >= 0 && own < spans)) && twisted[k] &&
         shape.Torsion[k] * shape.Torsion[i] > 0)
       {
