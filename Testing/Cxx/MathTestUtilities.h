@@ -6,8 +6,11 @@
 #include "Curve.h"
 #include "FitPolyline.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <random>
 #include <string>
@@ -103,6 +106,21 @@ double largestSecondDerivativeError(const Curve& curve, SecondDerivative second)
     largest = std::max(largest, (curve.evaluate(t, 2)[2] - second(t)).norm());
   }
   return largest;
+}
+
+/// Expects the fit with polynomial ends to reproduce a polynomial curve
+/// (s'' within tolerance of second everywhere) and the one with natural ends
+/// not to (an s'' error above 1, the curve's own s'' being larger at an end).
+template <class SecondDerivative>
+void expectPolynomialEndsReproduce(const char* curve, const Curve& polynomial,
+  const Curve& natural, SecondDerivative second, double tolerance)
+{
+  const double polynomialError = largestSecondDerivativeError(polynomial, second);
+  const double naturalError = largestSecondDerivativeError(natural, second);
+  std::printf("%s: largest s'' error %.3g with polynomial ends, %.3g natural\n", curve,
+    polynomialError, naturalError);
+  EXPECT_LT(polynomialError, tolerance) << curve;
+  EXPECT_GT(naturalError, 1.0) << curve;
 }
 
 /// Largest relative curvature and torsion errors of samples whose span lies
