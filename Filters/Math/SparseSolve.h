@@ -25,11 +25,12 @@ using Triplets = std::vector<Eigen::Triplet<double>>;
 
 /**
  * Solves A X = B for a square sparse A given as triplets (duplicates add up)
- * and three right-hand sides, one per coordinate. Banded and cyclic-banded
- * systems cost O(n). Throws SingularSystem if A is singular. With
- * conditionEstimate, also estimates the 1-norm condition number of A with
- * its rows scaled to a largest entry of 1 (Hager-Higham: a few more solves
- * with A and its transpose, still O(n)).
+ * and three right-hand sides, one per coordinate, with A's rows (and B's)
+ * scaled to a largest entry of 1 first, so that rows of very different
+ * scales keep their accuracy. Banded and cyclic-banded systems cost O(n).
+ * Throws SingularSystem if A is singular. With conditionEstimate, also
+ * estimates the 1-norm condition number of that row-scaled A (Hager-Higham:
+ * a few more solves with it and its transpose, still O(n)).
  */
 Eigen::MatrixX3d solveSparse(int n, const Triplets& entries, const Eigen::MatrixX3d& rhs,
   double* conditionEstimate = nullptr);

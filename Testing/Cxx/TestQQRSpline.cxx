@@ -3,6 +3,7 @@
 // classical cubic B-splines, the Bezier form, the local interpolation of
 // section 3.6, the automatic mode on the shape data sets and the helix.
 #include "QQRSpline.h"
+#include "SparseSolve.h"
 #include "MathTestUtilities.h"
 
 #include <gtest/gtest.h>
@@ -1328,6 +1329,26 @@ TEST(QQRSpline, InterpolationIsTheCubicSplineAtAlphaFour)
   EXPECT_LT(curve.evaluate(0.0, 2)[2].norm(), 1e-12);
   EXPECT_LT(curve.evaluate(2.0, 2)[2].norm(), 1e-12);
   EXPECT_LT((curve.evaluate(1.0, 0)[0] - three[1]).norm(), 1e-14);
+}
+
+TEST(QQRSpline, InterpolationPassesThroughItsPointsWithATinyEndSpan)
+{
+  // An end span 1.9e-6 of the others (fuzz: subnormal coordinates, centripetal
+  // knots): the not-a-knot row there has entries ~1 / h^3. Solved as it
+  // stood, the pivots lost the interpolation rows' accuracy and the curve
+  // missed points 1 and 2 by 5e-5 at a condition estimate of 2.6e6; with the
+  // rows scaled to a largest entry of 1 it passes through every point to
+  // rounding.
+  const std::vector<Vec3> points = { { 0, -0.5, -0.5 }, { 0, 0.5, -0.5 }, { 0, -0.5, -0.5 },
+    { 0, -0.5, 0.5 }, { 0, -0.5, 0.5 + 3.6e-12 } };
+  const std::vector<double> knots = { 0, 1, 2, 3, 3 + 1.9e-6 };
+  const QQRSpline curve =
+    QQRSpline::make(QQRConstruction::Interpolation, points, knots, false, 4.0, 4.0);
+  EXPECT_LT(curve.conditionEstimate(), UntrustedCondition);
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    EXPECT_LT((curve.evaluate(knots[i], 0)[0] - points[i]).norm(), 1e-12) << "point " << i;
+  }
 }
 
 TEST(QQRSpline, HelixCurvatureAndTorsion)
