@@ -70,6 +70,11 @@ public:
   AutomaticShape run()
   {
     this->start();
+    const auto outside = [&](unsigned mask) { return (mask & ~this->Ladder.Mends) != 0; };
+    if (std::any_of(this->Audit.SpanMask.begin(), this->Audit.SpanMask.end(), outside))
+    {
+      return this->finish(0);
+    }
     return this->search();
   }
 
@@ -719,7 +724,7 @@ AutomaticShape preserveShapeAutomatically(
   AutomaticShape found;
   try
   {
-    found = ShapeSearch(context, reference, ladder, true).run();
+    found = ShapeSearch(context, reference, ladder, ladder.RaiseTwistNeighbours).run();
   }
   catch (const SingularSystem&)
   {

@@ -58,6 +58,14 @@ struct ShapeLadder
   int Reach = 2;
   /// Every span at one level (a global scheme): any failure raises them all.
   bool Uniform = false;
+  /// A span whose torsion sign fails on it raises its neighbours with it
+  /// (the solve spreads a third derivative over them; see
+  /// preserveShapeAutomatically). Off where neighbouring raises undo each
+  /// other (qqr's flattening).
+  bool RaiseTwistNeighbours = true;
+  /// The criteria the ladder is meant to mend (criterionBit): where the
+  /// level-0 curve fails any other, no search is made and level 0 returned.
+  unsigned Mends = ~0u;
   /// Where the search leaves violations, search again raising only the
   /// failing spans (a twisting span's neighbours not with it) and keep the
   /// better curve. The variable degree interpolation's random 3D polylines
@@ -97,11 +105,12 @@ struct AutomaticShape
 };
 
 /**
- * The automatic mode: builds level 0 and audits it against reference; then,
- * round by round, raises each failing span (one that fails only criteria the
- * ladder does not mend excepted; a span already at the top, or
+ * The automatic mode: builds level 0 and audits it against reference (and
+ * returns it where it fails a criterion outside ShapeLadder::Mends); then,
+ * round by round, raises each failing span (a span already at the top, or
  * frozen, raises its neighbours instead; a span whose torsion changes sign
- * on it raises its neighbours with it) by a step that doubles while it
+ * on it raises its neighbours with it, ShapeLadder::RaiseTwistNeighbours) by
+ * a step that doubles while it
  * keeps failing, rebuilds, and audits again only the spans within Reach of a
  * change. A raise that pushes a span beyond the bounds (and beyond where it
  * was) is undone, tried again as a single step, and then that span's level

@@ -137,6 +137,11 @@ struct QQRKnotShape
   /// moved towards 1 and Z[k+1] towards 0 (at s = 1 the span is straight,
   /// the joins still C2). Empty: none.
   std::vector<double> Straightness;
+  /// Per point, how far (0..1) S_k moves towards the midpoint of the middle
+  /// points of its two spans, where the curve's second derivative at the
+  /// knot vanishes (x = Z[k+1] / 2, y = (1 - Z[k-1]) / 2 before a span's
+  /// Straightness scales them): at 1 the curve is flat at D_k. Empty: none.
+  std::vector<double> Flattening;
   /// Per point, nonzero where the points run straight through it: two
   /// straightened spans meeting there share their line, and neither moves
   /// the other's parameters (which would stop the curve at the point).
@@ -213,8 +218,9 @@ public:
     const Local& local = {}, const QQRKnotShape& knotShape = {});
 
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
-  /// Per span "Alpha", the larger of its two exponents, and "Straightness"
-  /// (QQRKnotShape; 0 unless the automatic mode moved it).
+  /// Per span "Alpha", the larger of its two exponents, "Straightness" and
+  /// "Flattening", the larger of its knots' (QQRKnotShape; 0 unless the
+  /// automatic mode moved them).
   std::vector<SpanParameter> spanParameters() const override;
 
   /// The five Bezier points of a span (the qqr curve (2.5) on it).
@@ -242,15 +248,18 @@ private:
   std::vector<std::array<double, 2>> Exponents;
   QQRKnotShape KnotShape;
   std::vector<double> Straightness;
+  std::vector<double> Flattening;
 };
 
 struct QQROptions
 {
   QQRConstruction Construction = QQRConstruction::Interpolation;
-  /// Where the shape audit fails, move the failing spans towards their
-  /// chords (QQRKnotShape::Straightness, preserveShapeAutomatically), and
-  /// raise alpha = beta up to MaxAlpha where a straight run of the data ends
-  /// in a turn.
+  /// Where the shape audit fails only torsion signs, flatten the curve at
+  /// the failing spans' knots (QQRKnotShape::Flattening); where violations
+  /// remain, move the failing spans towards their chords instead
+  /// (QQRKnotShape::Straightness), raising alpha = beta up to MaxAlpha where
+  /// a straight run of the data ends in a turn (preserveShapeAutomatically
+  /// for each; the curve with fewer violations kept).
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
@@ -275,9 +284,12 @@ double qqrTurnExponent(double kappa, double maxAlpha, int level);
  * the options (the data as control polygon: its shape reference is then the
  * data polygon), fixed exponents or automatic. The context's PointValues, if
  * any, are the local bias z per point; values outside [0, 1] or NaN take Z's.
- * Automatic: each span that breaks the shape is moved towards its chord,
- * level by level, within the bounds of preserveShapeAutomatically. An
- * exponent alone cannot do it: it scales the curvature vector at its knot
+ * Automatic: where the fixed curve breaks only torsion signs, the curve is
+ * flattened at the failing spans' knots first; where violations remain,
+ * each span that breaks the shape is moved towards its chord instead,
+ * level by level, within the bounds of preserveShapeAutomatically, and the
+ * curve with fewer violations kept. Moving a span towards its chord keeps
+ * the sign of its torsion. An exponent alone cannot do it either: it scales the curvature vector at its knot
  * without turning it, and a large exponent makes a span slow down at its
  * middle Bezier point (speed about alpha^2 2^-alpha of its polygon's). Two
  * neighbouring spans cannot both be straight where the data turn (C2 would

@@ -36,6 +36,8 @@ struct Toy
   double Detour = 0.0;
   bool Uniform = false;
   bool RetryFromCommonLevel = false;
+  bool RaiseTwistNeighbours = true;
+  unsigned Mends = ~0u;
   /// Raising this span makes the family's system singular (Build throws).
   int SingularSpan = -1;
   ProgressCallback Progress;
@@ -168,6 +170,8 @@ CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
     ladder.TopLevel = 2;
     ladder.Uniform = toy.Uniform;
     ladder.RetryFromCommonLevel = toy.RetryFromCommonLevel;
+    ladder.RaiseTwistNeighbours = toy.RaiseTwistNeighbours;
+    ladder.Mends = toy.Mends;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
       if (++run.Builds == 2)
       {
@@ -237,23 +241,53 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
   // Raised alone, such a span pushes its torsion's sign change into the next
   // span (the third derivative spreads through a family's solve): the driver
   // raises the neighbours in the same round. A clean helix whose span 20
-  // alone twists: the first round raises spans 19 to 21, and no other.
+  // alone twists: the first round raises spans 19 to 21, and no other; a
+  // ladder that turns that off (qqr's flattening: neighbouring knots
+  // flattened make its interpolation singular) raises span 20 alone.
   const std::vector<Vec3> points = helix(16, 3);
   constexpr int Twisted = 20;
-  Toy twisted;
-  twisted.TwistedSpan = Twisted;
-  ToyRun run;
-  const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, twisted));
-  EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations();
-  ASSERT_FALSE(run.FirstRaise.empty());
-  for (int j = 0; j < static_cast<int>(run.FirstRaise.size()); ++j)
+  for (const bool neighbours : { true, false })
   {
-    EXPECT_EQ(run.FirstRaise[j] > 0, std::abs(j - Twisted) <= 1) << "span " << j;
+    Toy twisted;
+    twisted.TwistedSpan = Twisted;
+    twisted.RaiseTwistNeighbours = neighbours;
+    ToyRun run;
+    const FittedPolyline fit = fitPolyline(points, FitOptions{}, toyBuilder(run, twisted));
+    EXPECT_TRUE(fit.Audit.preserving()) << fit.Audit.violations();
+    ASSERT_FALSE(run.FirstRaise.empty());
+    for (int j = 0; j < static_cast<int>(run.FirstRaise.size()); ++j)
+    {
+      EXPECT_EQ(run.FirstRaise[j] > 0, std::abs(j - Twisted) <= (neighbours ? 1 : 0)) << "span " << j;
+    }
   }
   // The twist is what failed: without it the helix needs no raise.
   ToyRun clean;
   EXPECT_TRUE(fitPolyline(points, FitOptions{}, toyBuilder(clean)).Audit.preserving());
   EXPECT_EQ(clean.Builds, 1);
+}
+
+TEST(AutomaticShape, ALadderIsNotSearchedWhereLevelZeroFailsWhatItDoesNotMend)
+{
+  // Akima's cubic fails convexity and collinearity (planar: no torsion). A
+  // ladder meant for torsion signs only returns level 0 after one build; the
+  // same ladder meant for everything mends it. The twisted helix fails only
+  // the torsion sign: the torsion ladder searches it.
+  const unsigned torsion =
+    criterionBit(ShapeCriterion::TorsionSignAtKnot) | criterionBit(ShapeCriterion::TorsionSignOnSpan);
+  Toy forTorsion;
+  forTorsion.Mends = torsion;
+  ToyRun skipped;
+  const FittedPolyline akimaFit = fitPolyline(akima(), FitOptions{}, toyBuilder(skipped, forTorsion));
+  EXPECT_EQ(skipped.Builds, 1);
+  EXPECT_TRUE(std::all_of(skipped.Levels.begin(), skipped.Levels.end(), [](int l) { return l == 0; }));
+  EXPECT_EQ(akimaFit.Audit.violations(),
+    fitPolyline(akima(), FitOptions{}, cubicBuilder()).Audit.violations());
+  ToyRun searched;
+  EXPECT_TRUE(fitPolyline(akima(), FitOptions{}, toyBuilder(searched)).Audit.preserving());
+  forTorsion.TwistedSpan = 20;
+  ToyRun twisted;
+  EXPECT_TRUE(fitPolyline(helix(16, 3), FitOptions{}, toyBuilder(twisted, forTorsion)).Audit.preserving());
+  EXPECT_GT(twisted.Builds, 1);
 }
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)
@@ -454,6 +488,38 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
       EXPECT_LE(automaticTotal, 0.1 * fixedTotal);
     }
   }
+}
+
+TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
+{
+  // Helices with 0.1% noise (two turns of 50 points): the fixed curve's
+  // violations are torsion signs where the data barely twist. Moving those
+  // spans towards their chords keeps their torsion's sign (measured: 83 of
+  // 879 left on 40 helices); flattening the curve at their knots mends them
+  // (4 left), within the bounds.
+  int fixedTotal = 0, automaticTotal = 0, flattenedLines = 0;
+  QQROptions fixedOptions;
+  fixedOptions.Automatic = false;
+  for (unsigned seed = 0; seed < 20; ++seed)
+  {
+    const std::vector<Vec3> points = noisyHelixPoints(50, 25.0, 0.001, seed);
+    const FittedPolyline fixed = fitPolyline(points, FitOptions{}, qqrBuilder(fixedOptions));
+    const FittedPolyline automatic = fitPolyline(points, FitOptions{}, qqrBuilder(QQROptions{}));
+    fixedTotal += fixed.Audit.violations();
+    automaticTotal += automatic.Audit.violations();
+    EXPECT_TRUE(withinBounds(boundFigures(automatic))) << "seed " << seed;
+    for (const SpanParameter& parameter : automatic.Spline->spanParameters())
+    {
+      const auto& values = parameter.Values;
+      flattenedLines += parameter.Name == "Flattening" &&
+        std::any_of(values.begin(), values.end(), [](double f) { return f > 0.0; });
+    }
+  }
+  std::printf("qqr on 20 noisy helices: %d violations fixed, %d automatic; %d lines flattened\n",
+    fixedTotal, automaticTotal, flattenedLines);
+  EXPECT_GT(fixedTotal, 200);
+  EXPECT_LE(automaticTotal, 0.02 * fixedTotal);
+  EXPECT_GT(flattenedLines, 10);
 }
 
 TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpacedPoints)

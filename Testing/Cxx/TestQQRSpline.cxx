@@ -1133,6 +1133,85 @@ TEST(QQRSpline, AStraightenedSpanLiesOnItsChordAndKeepsC2)
   }
 }
 
+TEST(QQRSpline, AFlattenedKnotHasNoCurvatureAndKeepsC2)
+{
+  // QQRKnotShape::Flattening at 1 puts S_k at the midpoint of the middle
+  // points of its two spans, where the second derivative at the knot
+  // vanishes (r'' ~ R_(k-1) - 2 S_k + R_k); it is a choice of x and y, so
+  // the joins stay C2 and the interpolation passes through the points. With
+  // a span straightened too, that span still lies on its chord.
+  std::mt19937 random(77);
+  for (const QQRConstruction construction :
+    { QQRConstruction::Interpolation, QQRConstruction::ControlPolygon })
+  {
+    for (const bool closed : { false, true })
+    {
+      const std::vector<Vec3> points = RandomPoints(14, random);
+      const int n = static_cast<int>(points.size());
+      const int spans = closed ? n : n - 1;
+      const std::vector<double> t = RandomKnots(spans + 1, random, 1.5);
+      QQRKnotShape shape;
+      shape.Flattening.assign(n, 0.0);
+      const std::vector<int> flat = { 0, 4, 5, 9 };
+      for (const int k : flat)
+      {
+        shape.Flattening[k] = 1.0;
+      }
+      shape.Flattening[11] = 0.5;
+      shape.Straightness.assign(spans, 0.0);
+      shape.Straightness[4] = 1.0; // between the flattened knots 4 and 5
+      const QQRSpline curve = QQRSpline::make(construction, points, t, closed, 4.0, 4.0, {}, shape);
+      double flatCurvature = 0.0, otherCurvature = 1e300, c2 = 0.0, through = 0.0, offChord = 0.0;
+      for (int k = 0; k < spans; ++k)
+      {
+        const Derivatives right = curve.evaluateOnSpan(k, t[k], 2);
+        const bool isFlat = std::find(flat.begin(), flat.end(), k) != flat.end();
+        const bool firstOfOpen = !closed && k == 0; // an open end: its own condition
+        const double scale = right[1].norm() * right[1].norm();
+        if (isFlat && !firstOfOpen)
+        {
+          flatCurvature = std::max(flatCurvature, right[2].norm() / scale);
+        }
+        else if (!isFlat && k != 11 && k != 4 + 1)
+        {
+          otherCurvature = std::min(otherCurvature, right[1].cross(right[2]).norm() / (scale * right[1].norm()));
+        }
+        if (closed || k > 0)
+        {
+          const double atKnot = k == 0 ? t[spans] : t[k];
+          const Derivatives left = curve.evaluateOnSpan((k - 1 + spans) % spans, atKnot, 2);
+          for (int m = 0; m <= 2; ++m)
+          {
+            c2 = std::max(c2, (left[m] - right[m]).norm() / std::max(1.0, right[m].norm()));
+          }
+        }
+        if (construction == QQRConstruction::Interpolation)
+        {
+          through = std::max(through, (right[0] - points[k]).norm());
+        }
+      }
+      const Vec3 chord = (points[5] - points[4]).normalized();
+      for (int s = 0; s <= 32; ++s)
+      {
+        const Vec3 r = curve.evaluateOnSpan(4, t[4] + (t[5] - t[4]) * s / 32.0, 0)[0] - points[4];
+        offChord = std::max(offChord, (r - r.dot(chord) * chord).norm());
+      }
+      std::printf("construction %d, closed %d: |r''| / |r'|^2 at flattened knots %.1e (curvature "
+                  "elsewhere at least %.2f); C2 jumps %.1e; data missed by %.1e; straightened "
+                  "span off its chord by %.1e\n",
+        static_cast<int>(construction), closed, flatCurvature, otherCurvature, c2, through, offChord);
+      EXPECT_LT(flatCurvature, 1e-9);
+      EXPECT_GT(otherCurvature, 1e-3);
+      EXPECT_LT(c2, 1e-9);
+      EXPECT_LT(through, 1e-12);
+      if (construction == QQRConstruction::Interpolation)
+      {
+        EXPECT_LT(offChord, 1e-12);
+      }
+    }
+  }
+}
+
 TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
 {
   // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)
@@ -1485,4 +1564,14 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
   EXPECT_THROW(withStraightness({ 0, 1.5, 0 }, {}), std::invalid_argument);
   EXPECT_THROW(withStraightness({ 0, NAN, 0 }, {}), std::invalid_argument);
   EXPECT_THROW(withStraightness({}, { 0, 0, 0 }), std::invalid_argument);
+  // Flattening: one value in [0, 1] per point.
+  auto withFlattening = [&](std::vector<double> flattening) {
+    QQRKnotShape shape;
+    shape.Flattening = std::move(flattening);
+    return QQRSpline::make(QQRConstruction::Interpolation, points, knots, false, kappa, paper, shape);
+  };
+  EXPECT_NO_THROW(withFlattening({ 0, 1, 0, 0.5 }));
+  EXPECT_THROW(withFlattening({ 0, 1, 0 }), std::invalid_argument);
+  EXPECT_THROW(withFlattening({ 0, -0.5, 0, 0 }), std::invalid_argument);
+  EXPECT_THROW(withFlattening({ 0, NAN, 0, 0 }), std::invalid_argument);
 }
