@@ -108,23 +108,22 @@ struct AutomaticShape
  * The automatic mode: builds level 0 and audits it against reference (and
  * returns it where it fails a criterion outside ShapeLadder::Mends); then,
  * round by round, raises each failing span (a span already at the top, or
- * frozen, raises its neighbours instead; a span whose torsion changes sign
- * on it raises its neighbours with it, ShapeLadder::RaiseTwistNeighbours) by
- * a step that doubles while it
- * keeps failing, rebuilds, and audits again only the spans within Reach of a
- * change. A raise that pushes a span beyond the bounds (and beyond where it
- * was) is undone, tried again as a single step, and then that span's level
- * frozen (the curve after the undo is checked again: a global solve moves
- * with every level); a span whose level three times in a row does not bring it closer
- * to passing (fewer failures, or a tenth less ShapeAudit::SpanDeficiency) is
- * frozen too. Stops when nothing fails, nothing can rise, or eight rounds in
- * a row meet no curve with fewer violations than the best; a last
- * audit of the whole curve catches the far effects of a global solve (then it
- * goes on). Returns the best curve met: the fewest violations, among those
- * within the bounds (of a second search, ShapeLadder::RetrySpanBySpan, or
- * a third, ShapeLadder::RetryFromCommonLevel, if it has fewer; both only
- * within RetryReach of the spans left failing). Progress is
- * reported each round (it can abort).
+ * frozen, raises its neighbours instead; a span whose torsion changes sign on
+ * it raises its neighbours with it, ShapeLadder::RaiseTwistNeighbours) by a
+ * step that doubles while it keeps failing, rebuilds, and audits again only the
+ * spans within Reach of a change. A raise that pushes a span beyond the bounds
+ * (and beyond where it was) is undone, tried again as a single step, and then
+ * that span's level frozen (the curve after the undo is checked again: a global
+ * solve moves with every level); a span whose level three times in a row does
+ * not bring it closer to passing (fewer failures, or a tenth less
+ * ShapeAudit::SpanDeficiency) is frozen too. Stops when nothing fails, nothing
+ * can rise, or eight rounds in a row meet no curve with fewer violations than
+ * the best; a last audit of the whole curve catches the far effects of a global
+ * solve (then it goes on). Returns the best curve met: the fewest violations,
+ * among those within the bounds (of a second search,
+ * ShapeLadder::RetrySpanBySpan, or a third, ShapeLadder::RetryFromCommonLevel,
+ * if it has fewer; both only within RetryReach of the spans left failing).
+ * Progress is reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);

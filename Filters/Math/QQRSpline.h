@@ -280,19 +280,19 @@ double qqrStraightness(int level);
 double qqrTurnExponent(double kappa, double maxAlpha, int level);
 
 /**
- * Builder of qqr B-spline-like curves for fitPolyline: the construction of
- * the options (the data as control polygon: its shape reference is then the
- * data polygon), fixed exponents or automatic. The context's PointValues, if
- * any, are the local bias z per point; values outside [0, 1] or NaN take Z's.
+ * Builder of qqr B-spline-like curves for fitPolyline: the construction of the
+ * options (the data as control polygon: its shape reference is then the data
+ * polygon), fixed exponents or automatic. The context's PointValues, if any,
+ * are the local bias z per point; values outside [0, 1] or NaN take Z's.
  * Automatic: where the fixed curve breaks only torsion signs, the curve is
- * flattened at the failing spans' knots first; where violations remain,
- * each span that breaks the shape is moved towards its chord instead,
- * level by level, within the bounds of preserveShapeAutomatically, and the
- * curve with fewer violations kept. Moving a span towards its chord keeps
- * the sign of its torsion. An exponent alone cannot do it either: it scales the curvature vector at its knot
- * without turning it, and a large exponent makes a span slow down at its
- * middle Bezier point (speed about alpha^2 2^-alpha of its polygon's). Two
- * neighbouring spans cannot both be straight where the data turn (C2 would
+ * flattened at the failing spans' knots first; where violations remain, each
+ * span that breaks the shape is moved towards its chord instead, level by
+ * level, within the bounds of preserveShapeAutomatically, and the curve with
+ * fewer violations kept. Moving a span towards its chord keeps the sign of its
+ * torsion. An exponent alone cannot keep the shape: it scales the curvature
+ * vector at its knot without turning it, and a large exponent makes a span slow down
+ * at its middle Bezier point (speed about alpha^2 2^-alpha of its polygon's).
+ * Two neighbouring spans cannot both be straight where the data turn (C2 would
  * stop the curve there), so on densely curved data some violations stay,
  * reported.
  */

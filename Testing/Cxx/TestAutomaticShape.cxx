@@ -257,7 +257,8 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
     ASSERT_FALSE(run.FirstRaise.empty());
     for (int j = 0; j < static_cast<int>(run.FirstRaise.size()); ++j)
     {
-      EXPECT_EQ(run.FirstRaise[j] > 0, std::abs(j - Twisted) <= (neighbours ? 1 : 0)) << "span " << j;
+      const int reach = neighbours ? 1 : 0;
+      EXPECT_EQ(run.FirstRaise[j] > 0, std::abs(j - Twisted) <= reach) << "span " << j;
     }
   }
   // The twist is what failed: without it the helix needs no raise.
@@ -272,21 +273,24 @@ TEST(AutomaticShape, ALadderIsNotSearchedWhereLevelZeroFailsWhatItDoesNotMend)
   // ladder meant for torsion signs only returns level 0 after one build; the
   // same ladder meant for everything mends it. The twisted helix fails only
   // the torsion sign: the torsion ladder searches it.
-  const unsigned torsion =
-    criterionBit(ShapeCriterion::TorsionSignAtKnot) | criterionBit(ShapeCriterion::TorsionSignOnSpan);
   Toy forTorsion;
-  forTorsion.Mends = torsion;
+  forTorsion.Mends = criterionBit(ShapeCriterion::TorsionSignAtKnot) |
+    criterionBit(ShapeCriterion::TorsionSignOnSpan);
   ToyRun skipped;
-  const FittedPolyline akimaFit = fitPolyline(akima(), FitOptions{}, toyBuilder(skipped, forTorsion));
+  const FittedPolyline akimaFit =
+    fitPolyline(akima(), FitOptions{}, toyBuilder(skipped, forTorsion));
   EXPECT_EQ(skipped.Builds, 1);
-  EXPECT_TRUE(std::all_of(skipped.Levels.begin(), skipped.Levels.end(), [](int l) { return l == 0; }));
+  EXPECT_EQ(std::count(skipped.Levels.begin(), skipped.Levels.end(), 0),
+    static_cast<long>(skipped.Levels.size()));
   EXPECT_EQ(akimaFit.Audit.violations(),
     fitPolyline(akima(), FitOptions{}, cubicBuilder()).Audit.violations());
   ToyRun searched;
   EXPECT_TRUE(fitPolyline(akima(), FitOptions{}, toyBuilder(searched)).Audit.preserving());
   forTorsion.TwistedSpan = 20;
   ToyRun twisted;
-  EXPECT_TRUE(fitPolyline(helix(16, 3), FitOptions{}, toyBuilder(twisted, forTorsion)).Audit.preserving());
+  const FittedPolyline helixFit =
+    fitPolyline(helix(16, 3), FitOptions{}, toyBuilder(twisted, forTorsion));
+  EXPECT_TRUE(helixFit.Audit.preserving()) << helixFit.Audit.violations();
   EXPECT_GT(twisted.Builds, 1);
 }
 
@@ -496,7 +500,7 @@ TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
   // violations are torsion signs where the data barely twist. Moving those
   // spans towards their chords keeps their torsion's sign (measured: 83 of
   // 879 left on 40 helices); flattening the curve at their knots mends them
-  // (4 left), within the bounds.
+  // (0 left), within the bounds.
   int fixedTotal = 0, automaticTotal = 0, flattenedLines = 0;
   QQROptions fixedOptions;
   fixedOptions.Automatic = false;

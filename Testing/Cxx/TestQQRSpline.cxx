@@ -1174,7 +1174,8 @@ TEST(QQRSpline, AFlattenedKnotHasNoCurvatureAndKeepsC2)
         }
         else if (!isFlat && k != 11 && k != 4 + 1)
         {
-          otherCurvature = std::min(otherCurvature, right[1].cross(right[2]).norm() / (scale * right[1].norm()));
+          const double curvature = right[1].cross(right[2]).norm() / (scale * right[1].norm());
+          otherCurvature = std::min(otherCurvature, curvature);
         }
         if (closed || k > 0)
         {
@@ -1199,7 +1200,8 @@ TEST(QQRSpline, AFlattenedKnotHasNoCurvatureAndKeepsC2)
       std::printf("construction %d, closed %d: |r''| / |r'|^2 at flattened knots %.1e (curvature "
                   "elsewhere at least %.2f); C2 jumps %.1e; data missed by %.1e; straightened "
                   "span off its chord by %.1e\n",
-        static_cast<int>(construction), closed, flatCurvature, otherCurvature, c2, through, offChord);
+        static_cast<int>(construction), closed, flatCurvature, otherCurvature, c2, through,
+        offChord);
       EXPECT_LT(flatCurvature, 1e-9);
       EXPECT_GT(otherCurvature, 1e-3);
       EXPECT_LT(c2, 1e-9);
@@ -1568,7 +1570,8 @@ TEST(QQRSpline, RejectsBadShapeParametersAndSizes)
   auto withFlattening = [&](std::vector<double> flattening) {
     QQRKnotShape shape;
     shape.Flattening = std::move(flattening);
-    return QQRSpline::make(QQRConstruction::Interpolation, points, knots, false, kappa, paper, shape);
+    return QQRSpline::make(
+      QQRConstruction::Interpolation, points, knots, false, kappa, paper, shape);
   };
   EXPECT_NO_THROW(withFlattening({ 0, 1, 0, 0.5 }));
   EXPECT_THROW(withFlattening({ 0, 1, 0 }), std::invalid_argument);
