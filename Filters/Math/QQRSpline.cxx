@@ -685,27 +685,23 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
       throw std::invalid_argument("qqr: local shape parameters must be finite (or NaN: the paper's)");
     }
   }
+  // Straightness per span and flattening per point: fractions in [0, 1].
+  const auto checkFractions = [](const std::vector<double>& values, int count,
+                                const std::string& name, const char* per) {
+    if (!values.empty() && static_cast<int>(values.size()) != count)
+    {
+      throw std::invalid_argument("qqr: " + name + " needs one value per " + per + " (" +
+        std::to_string(count) + "), got " + std::to_string(values.size()));
+    }
+    const auto outside = [](double f) { return !(f >= 0.0 && f <= 1.0); };
+    if (std::any_of(values.begin(), values.end(), outside))
+    {
+      throw std::invalid_argument("qqr: " + name + " must lie in [0, 1]");
+    }
+  };
   const std::vector<double>& straightness = knotShape.Straightness;
-  if (!straightness.empty() && static_cast<int>(straightness.size()) != spans)
-  {
-    throw std::invalid_argument("qqr: straightness needs one value per span (" +
-      std::to_string(spans) + "), got " + std::to_string(straightness.size()));
-  }
-  const auto outside = [](double s) { return !(s >= 0.0 && s <= 1.0); };
-  if (std::any_of(straightness.begin(), straightness.end(), outside))
-  {
-    throw std::invalid_argument("qqr: straightness must lie in [0, 1]");
-  }
-  const std::vector<double>& flattening = knotShape.Flattening;
-  if (!flattening.empty() && static_cast<int>(flattening.size()) != n)
-  {
-    throw std::invalid_argument("qqr: flattening needs one value per point (" + std::to_string(n) +
-      "), got " + std::to_string(flattening.size()));
-  }
-  if (std::any_of(flattening.begin(), flattening.end(), outside))
-  {
-    throw std::invalid_argument("qqr: flattening must lie in [0, 1]");
-  }
+  checkFractions(straightness, spans, "straightness", "span");
+  checkFractions(knotShape.Flattening, n, "flattening", "point");
   if (!knotShape.StraightThrough.empty() && static_cast<int>(knotShape.StraightThrough.size()) != n)
   {
     throw std::invalid_argument("qqr: StraightThrough needs one flag per point (" +

@@ -290,11 +290,11 @@ double qqrTurnExponent(double kappa, double maxAlpha, int level);
  * level, within the bounds of preserveShapeAutomatically, and the curve with
  * fewer violations kept. Moving a span towards its chord keeps the sign of its
  * torsion. An exponent alone cannot keep the shape: it scales the curvature
- * vector at its knot without turning it, and a large exponent makes a span slow down
- * at its middle Bezier point (speed about alpha^2 2^-alpha of its polygon's).
- * Two neighbouring spans cannot both be straight where the data turn (C2 would
- * stop the curve there), so on densely curved data some violations stay,
- * reported.
+ * vector at its knot without turning it, and a large exponent makes a span
+ * slow down at its middle Bezier point (speed about alpha^2 2^-alpha of its
+ * polygon's). Two neighbouring spans cannot both be straight where the data
+ * turn (C2 would stop the curve there), so on densely curved data some
+ * violations stay, reported.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines
