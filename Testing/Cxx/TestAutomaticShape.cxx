@@ -33,6 +33,9 @@ struct Toy
   /// The twist sits two spans past the highest span raised (TwistedSpan
   /// while none is): each raise moves the violation on, never away.
   bool TwistRunsAhead = false;
+  /// A second twist, on span MovingTwist[0] while it is at level 0, on span
+  /// MovingTwist[1] once it is raised (far away: no round's audit sees it).
+  std::array<int, 2> MovingTwist{ -1, -1 };
   double Detour = 0.0;
   bool Uniform = false;
   bool RetryFromCommonLevel = false;
@@ -51,8 +54,8 @@ struct Toy
  * violations the higher the level on planar data). With TwistedSpan, that
  * span of the cubic carries a twist along z, h tau^4 (1 - tau)^4 * 16, which
  * vanishes at its knots to the third derivative: the span's torsion changes
- * sign, its knots' does not; the blend with the chord takes it away. With
- * Detour, a span at level 1 bulges Detour * h off its chord instead of half
+ * sign, its knots' does not; the blend with the chord takes it away (the
+ * same for MovingTwist's). With Detour, a span at level 1 bulges Detour * h off its chord instead of half
  * blending (beyond the automatic mode's deviation bound when large).
  */
 class ToyCurve final : public Curve
@@ -66,6 +69,9 @@ public:
     , Levels(std::move(levels))
     , Wiggle(toy.Wiggle)
     , TwistedSpan(toy.TwistRunsAhead ? twistAhead(this->Levels, toy.TwistedSpan) : toy.TwistedSpan)
+    , MovedTwist(toy.MovingTwist[0] < 0 || this->Levels[toy.MovingTwist[0]] == 0
+          ? toy.MovingTwist[0]
+          : toy.MovingTwist[1])
     , Detour(toy.Detour)
   {
   }
@@ -75,7 +81,7 @@ public:
     Derivatives d = this->Cubic.evaluateOnSpan(span, t, order);
     const double h = this->Knots[span + 1] - this->Knots[span];
     const double tau = (t - this->Knots[span]) / h;
-    if (span == this->TwistedSpan)
+    if (span == this->TwistedSpan || span == this->MovedTwist)
     {
       // d^m/dt^m of 16 h tau^4 (1 - tau)^4, by its power form in tau.
       const std::array<double, 9> twist{ 0, 0, 0, 0, 16, -64, 96, -64, 16 };
@@ -153,6 +159,7 @@ private:
   std::vector<int> Levels;
   double Wiggle;
   int TwistedSpan;
+  int MovedTwist;
   double Detour;
 };
 
@@ -397,6 +404,26 @@ TEST(AutomaticShape, GivesUpAfterRoundsThatMeetNoBetterCurve)
   EXPECT_EQ(fit.Audit.violations(), 1);
   EXPECT_LE(run.Builds, 12);
   EXPECT_GE(run.Builds, 9); // the eight rounds, after the start
+}
+
+TEST(AutomaticShape, SearchesOnFromTheBestCurveWhereItsWholeAuditFindsWhatTheRoundsMissed)
+{
+  // Raising span 2 mends its twist and twists span 12, beyond the reach of
+  // the round's audit: the first round's curve counts one violation (the
+  // twist running ahead from span 20), the best met, and the search gives up
+  // eight rounds later. Audited whole, the best curve fails at span 12 too;
+  // the search goes on from it and straightens span 12 (its result kept 2
+  // violations before).
+  Toy hidden;
+  hidden.TwistedSpan = 20;
+  hidden.TwistRunsAhead = true;
+  hidden.MovingTwist = { 2, 12 };
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(helix(16, 16), FitOptions{}, toyBuilder(run, hidden));
+  EXPECT_EQ(fit.Audit.violations(), 1);
+  EXPECT_GT(run.Levels[2], 0);
+  EXPECT_EQ(run.Levels[12], 2);
+  EXPECT_EQ(fit.Audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignOnSpan)], 1);
 }
 
 TEST(AutomaticShape, ReportsProgressEveryRoundAndStopsWhenAsked)
