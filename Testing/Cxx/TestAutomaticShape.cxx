@@ -55,8 +55,9 @@ struct Toy
  * span of the cubic carries a twist along z, h tau^4 (1 - tau)^4 * 16, which
  * vanishes at its knots to the third derivative: the span's torsion changes
  * sign, its knots' does not; the blend with the chord takes it away (the
- * same for MovingTwist's). With Detour, a span at level 1 bulges Detour * h off its chord instead of half
- * blending (beyond the automatic mode's deviation bound when large).
+ * same for MovingTwist's). With Detour, a span at level 1 bulges Detour * h
+ * off its chord instead of half blending (beyond the automatic mode's
+ * deviation bound when large).
  */
 class ToyCurve final : public Curve
 {

@@ -527,7 +527,8 @@ TEST(AutomaticShapeFilters, QQRsDefaultModeOnTheAorta)
       MaxAbs(PointArray(discrete.Output, "DiscreteCurvature"), inputLines[c]);
     const double before = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
     const double after = CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
-    const double curvature = MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]) / dataCurvature;
+    const double curvature =
+      MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]) / dataCurvature;
     Measure("aorta line " + std::to_string(c) + ", qqr: violations fixed", before);
     Measure("aorta line " + std::to_string(c) + ", qqr: violations automatic", after);
     Measure("aorta line " + std::to_string(c) + ", qqr: curvature / data's", curvature);
