@@ -119,10 +119,12 @@ struct AutomaticShape
  * ShapeAudit::SpanDeficiency) is frozen too. Stops when nothing fails, nothing
  * can rise, or eight rounds in a row meet no curve with fewer violations than
  * the best; a last audit of the whole curve catches the far effects of a global
- * solve (then it goes on). Returns the best curve met: the fewest violations,
- * among those within the bounds (of a second search,
- * ShapeLadder::RetrySpanBySpan, or a third, ShapeLadder::RetryFromCommonLevel,
- * if it has fewer; both only within RetryReach of the spans left failing).
+ * solve (then it goes on), and so does one of the best curve met where the
+ * rounds ended on another (then it goes on from the best, once). Returns the
+ * best curve met: the fewest violations, among those within the bounds (of a
+ * second search, ShapeLadder::RetrySpanBySpan, or a third,
+ * ShapeLadder::RetryFromCommonLevel, if it has fewer; both only within
+ * RetryReach of the spans left failing).
  * Progress is reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(
