@@ -158,15 +158,42 @@ public:
       this->BestViolations = this->Audit.violations();
       if (missed)
       {
+        const std::vector<int> audited = this->Best;
+        const int auditedViolations = this->BestViolations;
         std::fill(this->Step.begin(), this->Step.end(), 1);
         std::fill(this->RaisedBefore.begin(), this->RaisedBefore.end(), 0);
         round = this->searchRounds(round);
+        this->keepIfBetterWhole(audited, auditedViolations);
       }
     }
     return this->finish(round);
   }
 
 private:
+  /// The best curve met, audited whole, if it has fewer violations than
+  /// the levels given (whole: count); those levels and their curve otherwise.
+  void keepIfBetterWhole(const std::vector<int>& levels, int count)
+  {
+    if (this->Best == levels)
+    {
+      return;
+    }
+    if (this->Best != this->Levels)
+    {
+      this->Levels = this->Best;
+      this->buildWhole();
+    }
+    this->auditStale();
+    this->AuditedWhole = true;
+    this->BestViolations = this->Audit.violations();
+    if (this->BestViolations >= count)
+    {
+      this->Best = this->Levels = levels;
+      this->buildWhole();
+      this->BestViolations = count;
+    }
+  }
+
   /// Rounds of raises from round on, until the search stops; the round it stopped at.
   int searchRounds(int round)
   {
