@@ -25,9 +25,9 @@
  * B-spline curve at the defaults; shape violations are counted against the
  * polygon).
  *
- * With Automatic on (default), where the shape audit (Costantini and
- * Manni, Definition 1) fails only torsion signs, the curve is first
- * flattened at the knots of the failing spans (flattening 1: no curvature
+ * With Automatic on (default), the curve is first flattened at the knots
+ * of the spans where the shape audit (Costantini and Manni, Definition 1)
+ * fails only torsion signs (flattening 1: no curvature
  * at the knot, the joins still C2); where violations remain, the failing
  * spans are moved towards their chords instead, step by step, through the
  * local parameters around them (straightness 1: on the chord, the joins

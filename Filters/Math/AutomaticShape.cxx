@@ -45,6 +45,7 @@ public:
                                             : AuditFigures::Bounds)
     , Levels(this->Spans, 0)
     , Frozen(this->Spans, 0)
+    , OutsideMends(this->Spans, 0)
     , Stalls(this->Spans, 0)
     , Step(this->Spans, 1)
     , RaisedBefore(this->Spans, 0)
@@ -70,10 +71,10 @@ public:
   AutomaticShape run()
   {
     this->start();
-    const auto outside = [&](unsigned mask) { return (mask & ~this->Ladder.Mends) != 0; };
-    if (std::any_of(this->Audit.SpanMask.begin(), this->Audit.SpanMask.end(), outside))
+    for (int j = 0; j < this->Spans; ++j)
     {
-      return this->finish(0);
+      this->OutsideMends[j] = (this->Audit.SpanMask[j] & ~this->Ladder.Mends) != 0;
+      this->Frozen[j] = this->Frozen[j] || this->OutsideMends[j];
     }
     return this->search();
   }
@@ -400,7 +401,7 @@ private:
           raiseNeighbours(j);
         }
       }
-      else if (this->Audit.SpanMask[j] != 0)
+      else if (this->Audit.SpanMask[j] != 0 && !this->OutsideMends[j])
       {
         raiseNeighbours(j);
       }
@@ -629,6 +630,8 @@ private:
   CurveAuditor Auditor;
   std::vector<int> Levels;
   std::vector<char> Frozen; ///< no longer raised: beyond the bounds, or stalled
+  /// Left as they are, neighbours too: level 0 fails what the ladder does not mend there.
+  std::vector<char> OutsideMends;
   std::vector<int> Stalls;
   std::vector<int> Step;
   std::vector<char> RaisedBefore; ///< raised in the last round

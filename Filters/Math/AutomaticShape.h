@@ -63,8 +63,9 @@ struct ShapeLadder
   /// preserveShapeAutomatically). Off where neighbouring raises undo each
   /// other (qqr's flattening).
   bool RaiseTwistNeighbours = true;
-  /// The criteria the ladder is meant to mend (criterionBit): where the
-  /// level-0 curve fails any other, no search is made and level 0 returned.
+  /// The criteria the ladder is meant to mend (criterionBit): the spans where
+  /// the level-0 curve fails any other stay at level 0 and do not raise
+  /// their neighbours.
   unsigned Mends = ~0u;
   /// Where the search leaves violations, search again raising only the
   /// failing spans (a twisting span's neighbours not with it) and keep the
@@ -105,16 +106,17 @@ struct AutomaticShape
 };
 
 /**
- * The automatic mode: builds level 0 and audits it against reference (and
- * returns it where it fails a criterion outside ShapeLadder::Mends); then,
- * round by round, raises each failing span (a span already at the top, or
- * frozen, raises its neighbours instead; a span whose torsion changes sign on
- * it raises its neighbours with it, ShapeLadder::RaiseTwistNeighbours) by a
- * step that doubles while it keeps failing, rebuilds, and audits again only the
- * spans within Reach of a change. A raise that pushes a span beyond the bounds
- * (and beyond where it was) is undone, tried again as a single step, and then
- * that span's level frozen (the curve after the undo is checked again: a global
- * solve moves with every level); a span whose level three times in a row does
+ * The automatic mode: builds level 0 and audits it against reference (the
+ * spans where it fails a criterion outside ShapeLadder::Mends are left
+ * alone); then, round by round, raises each failing span (a span already at
+ * the top, or frozen, raises its neighbours instead; a span whose torsion
+ * changes sign on it raises its neighbours with it,
+ * ShapeLadder::RaiseTwistNeighbours) by a step that doubles while it keeps
+ * failing, rebuilds, and audits again only the spans within Reach of a
+ * change. A raise that pushes a span beyond the bounds (and beyond where it
+ * was) is undone, tried again as a single step, and then that span's level
+ * frozen (the curve after the undo is checked again: a global solve moves
+ * with every level); a span whose level three times in a row does
  * not bring it closer to passing (fewer failures, or a tenth less
  * ShapeAudit::SpanDeficiency) is frozen too. Stops when nothing fails, nothing
  * can rise, or eight rounds in a row meet no curve with fewer violations than

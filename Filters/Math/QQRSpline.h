@@ -254,8 +254,8 @@ private:
 struct QQROptions
 {
   QQRConstruction Construction = QQRConstruction::Interpolation;
-  /// Where the shape audit fails only torsion signs, flatten the curve at
-  /// the failing spans' knots (QQRKnotShape::Flattening); where violations
+  /// Flatten the curve at the knots of the spans where the shape audit fails
+  /// only torsion signs (QQRKnotShape::Flattening); where violations
   /// remain, move the failing spans towards their chords instead
   /// (QQRKnotShape::Straightness), raising alpha = beta up to MaxAlpha where
   /// a straight run of the data ends in a turn (preserveShapeAutomatically
@@ -284,8 +284,8 @@ double qqrTurnExponent(double kappa, double maxAlpha, int level);
  * options (the data as control polygon: its shape reference is then the data
  * polygon), fixed exponents or automatic. The context's PointValues, if any,
  * are the local bias z per point; values outside [0, 1] or NaN take Z's.
- * Automatic: where the fixed curve breaks only torsion signs, the curve is
- * flattened at the failing spans' knots first; where violations remain, each
+ * Automatic: the curve is flattened first at the knots of the spans where the
+ * fixed curve breaks only torsion signs; where violations remain, each
  * span that breaks the shape is moved towards its chord instead, level by
  * level, within the bounds of preserveShapeAutomatically, and the curve with
  * fewer violations kept. Moving a span towards its chord keeps the sign of its

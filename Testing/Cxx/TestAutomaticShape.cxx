@@ -275,12 +275,17 @@ TEST(AutomaticShape, ASpanWhoseTorsionChangesSignRaisesItsNeighboursWithIt)
   EXPECT_EQ(clean.Builds, 1);
 }
 
-TEST(AutomaticShape, ALadderIsNotSearchedWhereLevelZeroFailsWhatItDoesNotMend)
+TEST(AutomaticShape, ALadderLeavesAloneTheSpansWhereLevelZeroFailsWhatItDoesNotMend)
 {
   // Akima's cubic fails convexity and collinearity (planar: no torsion). A
-  // ladder meant for torsion signs only returns level 0 after one build; the
-  // same ladder meant for everything mends it. The twisted helix fails only
-  // the torsion sign: the torsion ladder searches it.
+  // ladder meant for torsion signs only leaves those spans (and their
+  // neighbours) at level 0, so nothing is raised after the first build; the
+  // same ladder meant for everything mends them. The twisted helix fails only
+  // the torsion sign: the torsion ladder searches it; entered by a straight
+  // run, whose spans the cubic bends (collinearity), it still mends the twist
+  // (a long line fails a little of everything: qqr's flattening had not been
+  // searched on a noisy helix of 2e4 points for one convexity failure) and
+  // leaves the run as the cubic makes it.
   Toy forTorsion;
   forTorsion.Mends = criterionBit(ShapeCriterion::TorsionSignAtKnot) |
     criterionBit(ShapeCriterion::TorsionSignOnSpan);
@@ -300,6 +305,24 @@ TEST(AutomaticShape, ALadderIsNotSearchedWhereLevelZeroFailsWhatItDoesNotMend)
     fitPolyline(helix(16, 3), FitOptions{}, toyBuilder(twisted, forTorsion));
   EXPECT_TRUE(helixFit.Audit.preserving()) << helixFit.Audit.violations();
   EXPECT_GT(twisted.Builds, 1);
+
+  std::vector<Vec3> entered;
+  for (int k = 4; k > 0; --k)
+  {
+    entered.emplace_back(2.0 + k, -3.0 * k, 0.0); // a straight run towards the helix' start
+  }
+  const std::vector<Vec3> turns = helix(16, 3);
+  entered.insert(entered.end(), turns.begin(), turns.end());
+  forTorsion.TwistedSpan = 24;
+  const FittedPolyline cubic = fitPolyline(entered, FitOptions{}, cubicBuilder());
+  const int collinearity = static_cast<int>(ShapeCriterion::Collinearity);
+  ASSERT_GT(cubic.Audit.Failures[collinearity], 0);
+  ToyRun mixed;
+  const FittedPolyline mixedFit = fitPolyline(entered, FitOptions{}, toyBuilder(mixed, forTorsion));
+  EXPECT_EQ(mixedFit.Audit.Failures[static_cast<int>(ShapeCriterion::TorsionSignOnSpan)], 0);
+  EXPECT_GT(mixed.Levels[24], 0);
+  EXPECT_EQ(mixedFit.Audit.Failures[collinearity], cubic.Audit.Failures[collinearity]);
+  EXPECT_EQ(mixed.Levels[0] + mixed.Levels[1] + mixed.Levels[2], 0);
 }
 
 TEST(AutomaticShape, UniformLadderRaisesEverySpanTogether)

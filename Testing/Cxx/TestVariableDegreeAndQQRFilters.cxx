@@ -460,7 +460,7 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
   ASSERT_GT(left->GetTuple1(0), 0.0);
   ASSERT_GT(left->GetTuple1(1), 0.0);
   EXPECT_EQ(CountMessages(automatic.Warnings, { "2 line(s) keep shape violations", "cell 0", "cell 1",
-              "torsion sign on span at spans" }),
+              "convexity on span at spans" }),
     1)
     << Joined(automatic.Warnings);
   const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
