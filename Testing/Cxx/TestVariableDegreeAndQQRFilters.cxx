@@ -474,6 +474,42 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
     << Joined(preserved.Warnings);
 }
 
+namespace
+{
+/// Per line of the aorta in Data/: a family's violations in its fixed and
+/// default (automatic) modes, and the automatic curve's largest curvature,
+/// absolute and over the data's largest discrete curvature (measured).
+struct AortaFigures
+{
+  double Fixed = 0.0, Automatic = 0.0, Curvature = 0.0, CurvatureOverData = 0.0;
+};
+
+template <class Filter>
+std::vector<AortaFigures> OnTheAorta(const std::string& family, FilterRun& automatic)
+{
+  const auto data = ReadData("aorta-centerline.vtp");
+  const FilterRun fixed = RunFilter<Filter>(data, [](Filter* f) { f->AutomaticOff(); });
+  automatic = RunFilter<Filter>(data);
+  const FilterRun discrete = RunFilter<vtkPolylineShapeAnalysis>(data);
+  const std::vector<IdList> inputLines = LinesOf(data), lines = LinesOf(automatic.Output);
+  std::vector<AortaFigures> figures(lines.size());
+  for (size_t c = 0; c < lines.size() && c < inputLines.size(); ++c)
+  {
+    AortaFigures& line = figures[c];
+    line.Fixed = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
+    line.Automatic = CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
+    line.Curvature = MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]);
+    line.CurvatureOverData =
+      line.Curvature / MaxAbs(PointArray(discrete.Output, "DiscreteCurvature"), inputLines[c]);
+    const std::string name = "aorta line " + std::to_string(c) + ", " + family;
+    Measure(name + ": violations fixed", line.Fixed);
+    Measure(name + ": violations automatic", line.Automatic);
+    Measure(name + ": curvature / data's", line.CurvatureOverData);
+  }
+  return figures;
+}
+} // namespace
+
 TEST(AutomaticShapeFilters, TheQuinticsTensionKeepsTheAortasShape)
 {
   // The aorta's chords range from 9e-5 to 1: lowering gamma a little on a
@@ -484,26 +520,15 @@ TEST(AutomaticShapeFilters, TheQuinticsTensionKeepsTheAortasShape)
   // leaves a few, within the bounds, and short of what the filter warns
   // about as a cusp (line 0 had kept 1.1e6 over its bounding box diagonal,
   // within 1e3 times the data's curvature).
-  const auto data = ReadData("aorta-centerline.vtp");
-  const FilterRun fixed = RunFilter<Quintic>(data, [](Quintic* f) { f->AutomaticOff(); });
-  const FilterRun automatic = RunFilter<Quintic>(data);
-  const FilterRun discrete = RunFilter<vtkPolylineShapeAnalysis>(data);
-  const std::vector<IdList> inputLines = LinesOf(data), lines = LinesOf(automatic.Output);
-  ASSERT_EQ(lines.size(), 2u);
-  const double diagonal = data->GetLength(); // of the bounding box
-  for (vtkIdType c = 0; c < 2; ++c)
+  FilterRun automatic;
+  const std::vector<AortaFigures> figures = OnTheAorta<Quintic>("quintic", automatic);
+  ASSERT_EQ(figures.size(), 2u);
+  const double diagonal = ReadData("aorta-centerline.vtp")->GetLength(); // of the bounding box
+  for (size_t c = 0; c < 2; ++c)
   {
-    const double dataCurvature =
-      MaxAbs(PointArray(discrete.Output, "DiscreteCurvature"), inputLines[c]);
-    const double before = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
-    const double after = CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
-    const double curvature = MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]) / dataCurvature;
-    Measure("aorta line " + std::to_string(c) + ", quintic: violations fixed", before);
-    Measure("aorta line " + std::to_string(c) + ", quintic: violations automatic", after);
-    Measure("aorta line " + std::to_string(c) + ", quintic: curvature / data's", curvature);
-    EXPECT_LE(after, 0.05 * before) << c;
-    EXPECT_LE(curvature, 1e3) << c;
-    EXPECT_LE(MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]) * diagonal, 1e6) << c;
+    EXPECT_LE(figures[c].Automatic, 0.05 * figures[c].Fixed) << c;
+    EXPECT_LE(figures[c].CurvatureOverData, 1e3) << c;
+    EXPECT_LE(figures[c].Curvature * diagonal, 1e6) << c;
   }
   EXPECT_EQ(CountMessages(automatic.Warnings, { "cusp or a kink" }), 0)
     << Joined(automatic.Warnings);
@@ -515,26 +540,14 @@ TEST(AutomaticShapeFilters, QQRsDefaultModeOnTheAorta)
   // solve) beyond what the audit of its neighbourhood sees, and the search's
   // best curve, audited whole, failed 3 times (2 convexity, 1 torsion sign).
   // Searched on from it, 1 is left; the fixed exponents' curve fails 27.
-  const auto data = ReadData("aorta-centerline.vtp");
-  const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
-  const FilterRun automatic = RunFilter<QQR>(data);
-  const FilterRun discrete = RunFilter<vtkPolylineShapeAnalysis>(data);
-  const std::vector<IdList> inputLines = LinesOf(data), lines = LinesOf(automatic.Output);
-  ASSERT_EQ(lines.size(), 2u);
-  for (vtkIdType c = 0; c < 2; ++c)
+  FilterRun automatic;
+  const std::vector<AortaFigures> figures = OnTheAorta<QQR>("qqr", automatic);
+  ASSERT_EQ(figures.size(), 2u);
+  for (size_t c = 0; c < 2; ++c)
   {
-    const double dataCurvature =
-      MaxAbs(PointArray(discrete.Output, "DiscreteCurvature"), inputLines[c]);
-    const double before = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
-    const double after = CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
-    const double curvature =
-      MaxAbs(PointArray(automatic.Output, "Curvature"), lines[c]) / dataCurvature;
-    Measure("aorta line " + std::to_string(c) + ", qqr: violations fixed", before);
-    Measure("aorta line " + std::to_string(c) + ", qqr: violations automatic", after);
-    Measure("aorta line " + std::to_string(c) + ", qqr: curvature / data's", curvature);
-    EXPECT_GT(before, 20.0) << c;
-    EXPECT_LE(after, 1.0) << c;
-    EXPECT_LE(curvature, 1e3) << c;
+    EXPECT_GT(figures[c].Fixed, 20.0) << c;
+    EXPECT_LE(figures[c].Automatic, 1.0) << c;
+    EXPECT_LE(figures[c].CurvatureOverData, 1e3) << c;
   }
 }
 
