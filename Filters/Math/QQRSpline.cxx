@@ -416,6 +416,9 @@ public:
     , Local(local)
     , KnotShape(knotShape)
     , LocalInterpolation(localInterpolation)
+    , MemoX(this->Dh.size() + 3, std::numeric_limits<double>::quiet_NaN())
+    , MemoY(MemoX)
+    , MemoZ(MemoX)
   {
   }
 
@@ -453,6 +456,26 @@ public:
   }
 
 private:
+  /// x, y and z at the paper's index i, each made of several intervals and
+  /// neighbouring spans' shapes: computed once per index (a span's Bezier
+  /// points ask for them a dozen times; qqr builds spent a quarter of their
+  /// time recomputing them).
+  double X(int i) const { return this->memo(this->MemoX, i, &QQRGeometry::computeX); }
+  double Y(int i) const { return this->memo(this->MemoY, i, &QQRGeometry::computeY); }
+  double Z(int i) const { return this->memo(this->MemoZ, i, &QQRGeometry::computeZ); }
+  double memo(std::vector<double>& values, int i, double (QQRGeometry::*compute)(int) const) const
+  {
+    if (i < 0 || i >= static_cast<int>(values.size()))
+    {
+      return (this->*compute)(i);
+    }
+    if (std::isnan(values[i]))
+    {
+      values[i] = (this->*compute)(i);
+    }
+    return values[i];
+  }
+
   int spans() const { return static_cast<int>(this->Dh.size()); }
   /// h_i of the paper: knot u_i is t_{i-2}.
   double H(int i) const
@@ -490,7 +513,7 @@ private:
       this->entry(this->KnotShape.StraightThrough, std::max(k, neighbour), char(0)) != 0;
     return this->straightness(k) * (straight ? 1.0 - this->straightness(neighbour) : 1.0);
   }
-  double Z(int i) const
+  double computeZ(int i) const
   {
     // Span k = i - 1's middle point: the span after it wants it at its own
     // start (z = 1), the span before at its end (z = 0); both, halfway.
@@ -509,7 +532,7 @@ private:
       ? (2.0 * this->H(i) + this->H(i + 1)) / (2.0 * (this->H(i) + this->H(i + 1) + this->H(i + 2)))
       : this->Local.Z;
   }
-  double X(int i) const
+  double computeX(int i) const
   {
     if (this->LocalInterpolation)
     {
@@ -528,7 +551,7 @@ private:
     // ... and lies on span i - 2's chord when its x is 0.
     return (1.0 - this->pull(i - 2, i - 1)) * x;
   }
-  double Y(int i) const
+  double computeY(int i) const
   {
     if (this->LocalInterpolation)
     {
@@ -555,6 +578,8 @@ private:
   QQRLocalShape Local;
   const QQRKnotShape& KnotShape;
   bool LocalInterpolation;
+  /// X, Y, Z per paper index 0 .. spans + 2 (NaN: not computed yet).
+  mutable std::vector<double> MemoX, MemoY, MemoZ;
 };
 
 /// Weights of the r-th derivative (in u) of span k at its start (end false) or
