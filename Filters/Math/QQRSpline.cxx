@@ -458,7 +458,7 @@ public:
 private:
   /// x, y and z at the paper's index i, each made of several intervals and
   /// neighbouring spans' shapes: computed once per index (a span's Bezier
-  /// points ask for them a dozen times; qqr builds spent a quarter of their
+  /// points ask for them a dozen times; qqr builds spent a sixth of their
   /// time recomputing them).
   double X(int i) const { return this->memo(this->MemoX, i, &QQRGeometry::computeX); }
   double Y(int i) const { return this->memo(this->MemoY, i, &QQRGeometry::computeY); }
