@@ -29,6 +29,7 @@ namespace
 struct Toy
 {
   double Wiggle = 0.0;
+  int WiggleFrom = 0; ///< the first span that wiggles (the others blend with their chords)
   int TwistedSpan = -1;
   /// The twist sits two spans past the highest span raised (TwistedSpan
   /// while none is): each raise moves the violation on, never away.
@@ -69,6 +70,7 @@ public:
     , Points(data.Points)
     , Levels(std::move(levels))
     , Wiggle(toy.Wiggle)
+    , WiggleFrom(toy.WiggleFrom)
     , TwistedSpan(toy.TwistRunsAhead ? twistAhead(this->Levels, toy.TwistedSpan) : toy.TwistedSpan)
     , MovedTwist(toy.MovingTwist[0] < 0 || this->Levels[toy.MovingTwist[0]] == 0
           ? toy.MovingTwist[0]
@@ -101,7 +103,7 @@ public:
         d[m].z() += value * h / std::pow(h, m);
       }
     }
-    if (this->Wiggle > 0.0)
+    if (this->Wiggle > 0.0 && span >= this->WiggleFrom)
     {
       const double a = this->Levels[span] * this->Wiggle * h;
       const double w = 2.0 * Pi / h;
@@ -159,6 +161,7 @@ private:
   std::vector<Vec3> Points;
   std::vector<int> Levels;
   double Wiggle;
+  int WiggleFrom;
   int TwistedSpan;
   int MovedTwist;
   double Detour;
@@ -364,6 +367,32 @@ TEST(AutomaticShape, SearchesFromACommonLevelWhereOneStepUpBreaksTheBounds)
       EXPECT_EQ(std::count(levels.begin(), levels.end(), 0), spans);
     }
   }
+}
+
+TEST(AutomaticShape, SearchesFromEachWindowsBestCommonLevel)
+{
+  // Two spans fail far apart (more than twice RetryReach): span 5's twist,
+  // whose span and neighbours bulge beyond the bounds at level 1 and are
+  // straight at 2, and span 100's, which stays whatever its level and whose
+  // neighbourhood wiggles out of plane when raised. The first search keeps
+  // both; the common level 2 mends the first window but breaks the second
+  // more, so no common level beats the first search. Each window at its own
+  // best level (2 around span 5, 0 around span 100) leaves only the twist
+  // at span 100 (both were left before).
+  Toy apart;
+  apart.TwistedSpan = 5;
+  apart.Detour = 5.0;
+  apart.MovingTwist = { 100, 100 };
+  apart.Wiggle = 0.05;
+  apart.WiggleFrom = 70;
+  apart.RetryFromCommonLevel = true;
+  ToyRun run;
+  const FittedPolyline fit = fitPolyline(helix(16, 8), FitOptions{}, toyBuilder(run, apart));
+  EXPECT_EQ(fit.Audit.violations(), 1);
+  ASSERT_EQ(fit.Audit.Where.size(), 1u);
+  EXPECT_EQ(fit.Audit.Where[0].Where, 100);
+  EXPECT_EQ(run.Levels[5], 2);
+  EXPECT_EQ(run.Levels[100], 0);
 }
 
 TEST(AutomaticShape, SearchesAgainOnlyAroundWhatTheFirstSearchLeftFailing)
