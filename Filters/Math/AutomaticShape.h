@@ -74,8 +74,9 @@ struct ShapeLadder
   /// none for 1.3-2x the cost.
   bool RetrySpanBySpan = false;
   /// Where the search leaves violations, search again from the common level
-  /// of every span with the fewest violations within the bounds, and keep
-  /// the better curve: on very uneven knots (the aorta's) a span raised
+  /// of every span with the fewest violations within the bounds (or from
+  /// each window around what is left failing at its own best level), and
+  /// keep the better curve: on very uneven knots (the aorta's) a span raised
   /// alone meets the bounds long before the level that mends it. For
   /// interpolations (it ignores CurvatureChange).
   bool RetryFromCommonLevel = false;
