@@ -22,6 +22,34 @@ int failingBits(unsigned mask)
   return bits;
 }
 
+/// Per span of an audit: whether anything fails on it.
+std::vector<char> failingSpans(const ShapeAudit& audit)
+{
+  std::vector<char> failing(audit.SpanMask.size());
+  std::transform(audit.SpanMask.begin(), audit.SpanMask.end(), failing.begin(),
+    [](unsigned mask) { return mask != 0; });
+  return failing;
+}
+
+/// Per span: whether it lies within reach of a marked one (a closed line's wrap around).
+std::vector<char> withinReach(const std::vector<char>& marked, int reach, bool closed)
+{
+  const int spans = static_cast<int>(marked.size());
+  std::vector<char> in(spans, 0);
+  for (int j = 0; j < spans; ++j)
+  {
+    for (int d = -reach; d <= reach && marked[j]; ++d)
+    {
+      const int k = closed ? wrapIndex(j + d, spans) : j + d;
+      if (k >= 0 && k < spans)
+      {
+        in[k] = 1;
+      }
+    }
+  }
+  return in;
+}
+
 /**
  * The state of one automatic search (preserveShapeAutomatically): the levels
  * per span and what the rounds learnt about each span, the curve of the
@@ -88,13 +116,8 @@ public:
    */
   void keepOutside(const AutomaticShape& earlier, int reach)
   {
-    std::vector<char> failing(this->Spans, 0);
-    for (int j = 0; j < this->Spans; ++j)
-    {
-      failing[j] = earlier.Audit.SpanMask[j] != 0;
-    }
     std::fill(this->Frozen.begin(), this->Frozen.end(), 1);
-    for (const int j : this->around(failing, reach))
+    for (const int j : this->around(failingSpans(earlier.Audit), reach))
     {
       this->Frozen[j] = 0;
     }
@@ -157,12 +180,10 @@ public:
     int round = this->searchRounds(1);
     if (this->Best != this->Levels)
     {
-      this->Levels = this->Best;
-      this->buildWhole();
-      this->AuditedWhole = true;
-      const bool missed = this->Audit.violations() > this->BestViolations;
+      const int counted = this->BestViolations;
+      this->switchToWhole(this->Best);
       this->BestViolations = this->Audit.violations();
-      if (missed)
+      if (this->BestViolations > counted)
       {
         const std::vector<int> audited = this->Best;
         const int auditedViolations = this->BestViolations;
@@ -184,20 +205,29 @@ private:
     {
       return;
     }
-    if (this->Best != this->Levels)
-    {
-      this->Levels = this->Best;
-      this->buildWhole();
-    }
-    this->auditStale();
-    this->AuditedWhole = true;
+    this->switchToWhole(this->Best);
     this->BestViolations = this->Audit.violations();
     if (this->BestViolations >= count)
     {
-      this->Best = this->Levels = levels;
-      this->buildWhole();
+      this->Best = levels;
+      this->switchToWhole(levels);
       this->BestViolations = count;
     }
+  }
+
+  /// The curve of these levels, audited whole (built only if they are not the current ones).
+  void switchToWhole(const std::vector<int>& levels)
+  {
+    if (levels != this->Levels)
+    {
+      this->Levels = levels;
+      this->buildWhole();
+    }
+    else
+    {
+      this->auditStale();
+    }
+    this->AuditedWhole = true;
   }
 
   /// Rounds of raises from round on, until the search stops; the round it stopped at.
@@ -294,15 +324,7 @@ private:
   /// The spans within reach of a marked one.
   std::vector<int> around(const std::vector<char>& marked, int reach) const
   {
-    std::vector<char> in(this->Spans, 0);
-    for (int j = 0; j < this->Spans; ++j)
-    {
-      for (int d = -reach; d <= reach && marked[j]; ++d)
-      {
-        const int k = this->span(j + d);
-        in[std::max(k, 0)] = in[std::max(k, 0)] || k >= 0;
-      }
-    }
+    const std::vector<char> in = withinReach(marked, reach, this->Reference.Closed);
     std::vector<int> spans;
     for (int j = 0; j < this->Spans; ++j)
     {
@@ -754,22 +776,13 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
   // The windows around what the first search left failing, each numbered
   // (-1: outside them), and per window the fewest failures met and the levels then.
   const int spans = static_cast<int>(earlier.Levels.size());
+  const std::vector<char> in =
+    withinReach(failingSpans(earlier.Audit), RetryReach, reference.Closed);
   std::vector<int> window(spans, -1);
-  for (int j = 0; j < spans; ++j)
-  {
-    for (int d = -RetryReach; d <= RetryReach && earlier.Audit.SpanMask[j] != 0; ++d)
-    {
-      const int k = reference.Closed ? wrapIndex(j + d, spans) : j + d;
-      if (k >= 0 && k < spans)
-      {
-        window[k] = 0;
-      }
-    }
-  }
   int windows = 0;
   for (int j = 0; j < spans; ++j)
   {
-    window[j] = window[j] < 0 ? -1 : (j > 0 && window[j - 1] >= 0 ? windows - 1 : windows++);
+    window[j] = !in[j] ? -1 : (j > 0 && in[j - 1] ? windows - 1 : windows++);
   }
   auto failuresPerWindow = [&](const ShapeAudit& audit) {
     std::vector<int> failures(windows, 0);
