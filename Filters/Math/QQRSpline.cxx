@@ -958,9 +958,10 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       // A flattened knot moves the curve far along a run of flattened knots
       // (their interpolation rows ~(1, 2, 1) / 4 do not damp a change), which
       // the audits of each round's neighbourhood miss: on a long line the
-      // search does not converge and its curve is discarded. Short lines end
-      // within 16 rounds (400 noisy helices: the same 11 violations left); a
-      // helix of 1e4 points spent 5.8x the fixed mode's time, 3.7x capped.
+      // search does not converge, and spent its rounds for nothing while
+      // its curve was discarded. Short lines end within 16 rounds (400 noisy
+      // helices: the same 11 violations left); a helix of 1e4 points spent
+      // 5.8x the fixed mode's time, 3.7x capped.
       constexpr int FlatteningRounds = 16;
       flattening.MaxRounds = std::min(options.MaxRounds, FlatteningRounds);
       flattening.Reach = ladder.Reach;
