@@ -32,8 +32,10 @@
  * spans are moved towards their chords instead, step by step, through the
  * local parameters around them (straightness 1: on the chord, the joins
  * still C2), and the exponent is raised where a straight run of the points
- * ends in a turn; the curve with fewer violations is kept, within the
- * bounds of the automatic modes (no cusp, no span far from its data); what
+ * ends in a turn, from the unflattened curve and, where violations still
+ * remain, from the flattened one; the curve with the fewest violations is
+ * kept, within the bounds of the automatic modes (no cusp, no span far from
+ * its data); what
  * that cannot remove is reported (two neighbouring spans cannot both be
  * straight where the points turn). Continuity C2_FC
  * (approximation) sets x = y = 0 and alpha = beta >= FrenetOrder + 3: C2 and

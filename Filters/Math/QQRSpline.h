@@ -234,6 +234,9 @@ public:
   /// The local shape parameters the curve was built with, one per point
   /// (QQRKnotShape; for an interpolation X and Y are the ones of (3.18)).
   const QQRKnotShape& knotShape() const { return this->KnotShape; }
+  /// The flattening the curve was built with, one per point
+  /// (QQRKnotShape::Flattening; empty: none).
+  const std::vector<double>& flattening() const { return this->Flattening; }
 
 private:
   QQRSpline(std::vector<double> knots, bool closed);
@@ -259,7 +262,8 @@ struct QQROptions
   /// remain, move the failing spans towards their chords instead
   /// (QQRKnotShape::Straightness), raising alpha = beta up to MaxAlpha where
   /// a straight run of the data ends in a turn (preserveShapeAutomatically
-  /// for each; the curve with fewer violations kept).
+  /// for each), from the unflattened curve and, where violations still
+  /// remain, from the flattened one; the curve with the fewest violations kept.
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
@@ -287,14 +291,16 @@ double qqrTurnExponent(double kappa, double maxAlpha, int level);
  * Automatic: the curve is flattened first at the knots of the spans where the
  * fixed curve breaks only torsion signs; where violations remain, each
  * span that breaks the shape is moved towards its chord instead, level by
- * level, within the bounds of preserveShapeAutomatically, and the curve with
- * fewer violations kept. Moving a span towards its chord keeps the sign of its
- * torsion. An exponent alone cannot keep the shape: it scales the curvature
- * vector at its knot without turning it, and a large exponent makes a span
- * slow down at its middle Bezier point (speed about alpha^2 2^-alpha of its
- * polygon's). Two neighbouring spans cannot both be straight where the data
- * turn (C2 would stop the curve there), so on densely curved data some
- * violations stay, reported.
+ * level, within the bounds of preserveShapeAutomatically (from the
+ * unflattened curve, and where violations still remain from the flattened
+ * one), and the curve with the fewest violations kept. Moving a span
+ * towards its chord keeps the sign of its torsion. An exponent alone cannot
+ * keep the shape: it scales the curvature vector at its knot without
+ * turning it, and a large exponent makes a span slow down at its middle
+ * Bezier point (speed about alpha^2 2^-alpha of its polygon's). Two
+ * neighbouring spans cannot both be straight where the data turn (C2 would
+ * stop the curve there), so on densely curved data some violations stay,
+ * reported.
  */
 CurveBuilder qqrBuilder(const QQROptions& options);
 } // namespace shapesplines
