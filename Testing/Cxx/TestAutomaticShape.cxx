@@ -680,10 +680,11 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
     std::printf("%s, 180 unevenly spaced noisy helices: %d violations fixed, %d automatic, largest "
                 "curvature over the data's %.3g\n",
       family.Name, fixedTotal, automaticTotal, largest);
-    // What each family leaves at most (measured 0.06%, 0.22%, 2.9%, 73%; the
-    // quintic left 18% before its search from a common level).
+    // What each family leaves at most (measured 0.04%, 0.09%, 3.2%, 10.7%;
+    // the quintic left 18% before its search from a common level, qqr 12.7%
+    // before it straightened from the flattened curve too).
     const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.01 },
-      { "variable degree", 0.01 }, { "tension quintic", 0.06 }, { "qqr", 0.8 } };
+      { "variable degree", 0.01 }, { "tension quintic", 0.06 }, { "qqr", 0.12 } };
     EXPECT_LT(automaticTotal, leftAtMost.at(family.Name) * fixedTotal) << family.Name;
   }
 }
