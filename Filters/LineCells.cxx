@@ -5,6 +5,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
+#include "vtkDataArrayRange.h"
 #include "vtkFieldData.h"
 #include "vtkInformationVector.h"
 #include "vtkPoints.h"
@@ -119,7 +120,14 @@ std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples)
 }
 double coordinatePrecision(vtkPolyData* polyData)
 {
-  const bool floats = polyData->GetPoints() && polyData->GetPoints()->GetDataType() == VTK_FLOAT;
+  vtkPoints* points = polyData->GetPoints();
+  bool floats = points && points->GetDataType() == VTK_FLOAT;
+  if (points && points->GetDataType() == VTK_DOUBLE && points->GetNumberOfPoints() > 0)
+  {
+    const auto values = vtk::DataArrayValueRange(points->GetData());
+    floats = std::all_of(values.begin(), values.end(),
+      [](double value) { return static_cast<double>(static_cast<float>(value)) == value; });
+  }
   return floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
 }
 } // namespace shapesplines

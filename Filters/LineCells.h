@@ -55,7 +55,9 @@ std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples);
 
 /// Relative precision of polyData's point coordinates: FLT_EPSILON for float
 /// points (rounded to 6e-8 relative: curvature or a turn within that is
-/// noise), DBL_EPSILON otherwise.
+/// noise) and for double points that are all float values (converted from
+/// float, as a float file read into numpy and back: the same rounding),
+/// DBL_EPSILON otherwise.
 double coordinatePrecision(vtkPolyData* polyData);
 } // namespace shapesplines
 
