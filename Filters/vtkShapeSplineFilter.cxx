@@ -903,14 +903,67 @@ void WriteSamplesInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines,
     sampling, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(kept.size()), writeRange); });
 }
 
-/// A curvature a million times the line's size is a cusp or a kink, not the
-/// shape of the data.
-void ReportCurvatureSpikes(
+/// One message a run for the interpolated lines that run straight back on
+/// themselves, where every smooth curve through the points has a cusp (the
+/// curvature spike's warning would blame the family). Returns per line
+/// whether it does.
+std::vector<char> ReportReversals(
   vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+{
+  constexpr size_t DescribedLines = 3;
+  std::vector<char> reversing(lines.size(), 0);
+  std::ostringstream lineText;
+  size_t count = 0;
+  for (const size_t k : kept)
+  {
+    const shapesplines::FittedPolyline& fit = lines[k].Fit;
+    if (!fit.Spline || !fit.interpolates())
+    {
+      continue;
+    }
+    const std::vector<int> points = shapesplines::reversals(fit.Data);
+    if (points.empty())
+    {
+      continue;
+    }
+    reversing[k] = 1;
+    if (count++ < DescribedLines)
+    {
+      lineText << " Line (" << lines[k].Name << "): " << points.size() << " point(s), the first "
+               << "its point " << fit.Data.SourceIndex[points.front()] << ".";
+    }
+  }
+  if (count > DescribedLines)
+  {
+    lineText << " And " << count - DescribedLines << " more line(s).";
+  }
+  if (count > 0)
+  {
+    vtkWarningWithObjectMacro(self, << count << " line(s) run straight back on themselves: a "
+                                    << "smooth curve through a point where the line turns by 180 "
+                                    << "degrees stops there and turns (a cusp, curvature without "
+                                    << "bound), in every family. Remove the back-and-forth points "
+                                    << "(a streamline oscillating about a critical point: fewer "
+                                    << "Maximum Steps, or a larger Terminal Speed), split the line "
+                                    << "there, or approximate it (Mode Approximate of the tension "
+                                    << "quintic or the variable degree spline)." << lineText.str());
+  }
+  return reversing;
+}
+
+/// A curvature a million times the line's size is a cusp or a kink, not the
+/// shape of the data (where the line runs back on itself, ReportReversals
+/// says why).
+void ReportCurvatureSpikes(vtkAlgorithm* self, const std::vector<LineWork>& lines,
+  const std::vector<size_t>& kept, const std::vector<char>& reversing)
 {
   for (const size_t k : kept)
   {
     const LineWork& line = lines[k];
+    if (reversing[k])
+    {
+      continue;
+    }
     const double diagonal =
       line.Fit.Spline ? line.Fit.Scale * shapesplines::boundingBoxDiagonal(line.Fit.Data.Points) : 0.0;
     if (line.LargestCurvature * diagonal > shapesplines::CuspCurvature)
@@ -1160,7 +1213,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1; // an aborted run leaves the output empty
   }
   this->UpdateProgress(0.95);
-  ReportCurvatureSpikes(this, lines, kept);
+  ReportCurvatureSpikes(this, lines, kept, ReportReversals(this, lines, kept));
   samples.AddTo(output, this->VMTKArrayNames);
   WriteCellData(readable.Cells, output, *gathered, kept, parameterNames);
   // The fits freed in parallel, not one after another when the lines go

@@ -44,6 +44,22 @@ const char* shapeCriterionName(ShapeCriterion criterion)
   }
 }
 
+std::vector<int> reversals(const CleanPolyline& data, double tolerance)
+{
+  const int n = static_cast<int>(data.Points.size());
+  std::vector<int> found;
+  for (int i = data.Closed ? 0 : 1; i < (data.Closed ? n : n - 1) && n > 2; ++i)
+  {
+    const Vec3 before = data.segment((i - 1 + n) % n).stableNormalized();
+    const Vec3 after = data.segment(i).stableNormalized();
+    if (before.dot(after) < 0.0 && before.cross(after).norm() <= tolerance)
+    {
+      found.push_back(i);
+    }
+  }
+  return found;
+}
+
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
   const std::vector<double>& vertexNoise, double coordinateNoise)
 {

@@ -65,6 +65,16 @@ struct DiscreteShape
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
   const std::vector<double>& vertexNoise = {}, double coordinateNoise = 0.0);
 
+/**
+ * The points where a polyline runs straight back on itself: the segments
+ * before and after them opposite, within tolerance (the sine of the angle
+ * between them, as for collinear points). A smooth curve through such a
+ * point stops there and turns (a cusp), whatever the family: Definition 1
+ * asks nothing there, and the curvature has no bound. Streamlines
+ * oscillating about a critical point and retraced paths have them.
+ */
+std::vector<int> reversals(const CleanPolyline& data, double tolerance = ShapeTolerances{}.Data);
+
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).
 constexpr double MaximumPolygonDeviation = 0.5;

@@ -439,3 +439,25 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceNextToAnOpenEnd)
   EXPECT_EQ(failing([](double u) { return u > 3.0 && u < 3.4; }), 1); // an inner span: no
   EXPECT_EQ(failing([](double u) { return u >= 1.0 && u <= 2.0; }), 1); // all of span 1: no
 }
+
+TEST(DiscreteShape, ReversalsAreWhereTheLineRunsStraightBack)
+{
+  // A to B and back to A twice: reversals at both; a hairpin that still
+  // turns (170 degrees) is none; running back within the collinearity
+  // tolerance (a turn of 180 degrees less 1e-8) is one; so is a closed
+  // line's seam where it runs back along its first segment; a straight run
+  // forwards is none.
+  const Vec3 bent(2 - std::cos(Pi / 18), std::sin(Pi / 18), 0);
+  CleanPolyline line;
+  line.Points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), bent,
+    Vec3(2, 1e-8, 0) };
+  EXPECT_EQ(reversals(line), std::vector<int>({ 1, 2, 5 }));
+  line.Points.back() = Vec3(2, 1e-4, 0);
+  EXPECT_EQ(reversals(line), std::vector<int>({ 1, 2 }));
+  CleanPolyline closed;
+  closed.Points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0) };
+  closed.Closed = true; // 2 -> 0 runs back along 0 -> 1 -> 2
+  EXPECT_EQ(reversals(closed), std::vector<int>({ 0, 2 }));
+  closed.Closed = false;
+  EXPECT_TRUE(reversals(closed).empty());
+}

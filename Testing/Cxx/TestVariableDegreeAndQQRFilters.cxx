@@ -476,6 +476,38 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
     << Joined(preserved.Warnings);
 }
 
+TEST(AutomaticShapeFilters, ALineThatRunsStraightBackIsNamedNotBlamedOnTheFamily)
+{
+  // A helix whose last points go back and forth between its last two (as a
+  // streamline oscillating about a critical point): every smooth curve
+  // through them stops at the turns (a cusp). One warning names the line
+  // and its first such point, instead of a curvature spike warning that
+  // recommends another family; the clean helix beside it is not named; an
+  // approximation, which does not pass through the points, has none.
+  Polyline helix;
+  for (int i = 0; i < 40; ++i)
+  {
+    const double t = 2.0 * vtkMath::Pi() * i / 16.0;
+    helix.push_back({ std::cos(t), std::sin(t), 0.25 * t });
+  }
+  Polyline reversing = helix;
+  for (int k = 0; k < 4; ++k)
+  {
+    reversing.push_back(helix[k % 2 == 0 ? 38 : 39]);
+  }
+  const auto data = PolylinesData({ reversing, helix });
+  const FilterRun tensioned = RunFilter<vtkGeneralizedCubicSplineFilter>(data);
+  EXPECT_EQ(CountMessages(tensioned.Warnings,
+              { "1 line(s) run straight back", "Line (cell 0): 4 point(s), the first its point 39" }),
+    1)
+    << Joined(tensioned.Warnings);
+  EXPECT_EQ(CountMessages(tensioned.Warnings, { "run straight back", "cell 1" }), 0);
+  EXPECT_EQ(CountMessages(tensioned.Warnings, { "cusp or a kink" }), 0) << Joined(tensioned.Warnings);
+  const FilterRun approximated = RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); });
+  EXPECT_EQ(CountMessages(approximated.Warnings, { "run straight back" }), 0)
+    << Joined(approximated.Warnings);
+}
+
 namespace
 {
 /// Per line of the aorta in Data/: a family's violations in its fixed and
