@@ -502,8 +502,10 @@ TEST(AutomaticShapeFilters, ALineThatRunsStraightBackIsNamedNotBlamedOnTheFamily
     1)
     << Joined(tensioned.Warnings);
   EXPECT_EQ(CountMessages(tensioned.Warnings, { "run straight back", "cell 1" }), 0);
-  EXPECT_EQ(CountMessages(tensioned.Warnings, { "cusp or a kink" }), 0) << Joined(tensioned.Warnings);
-  const FilterRun approximated = RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); });
+  EXPECT_EQ(CountMessages(tensioned.Warnings, { "cusp or a kink" }), 0)
+    << Joined(tensioned.Warnings);
+  const FilterRun approximated =
+    RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); });
   EXPECT_EQ(CountMessages(approximated.Warnings, { "run straight back" }), 0)
     << Joined(approximated.Warnings);
 }
