@@ -35,9 +35,8 @@
  * ends in a turn, from the unflattened curve and, where violations still
  * remain, from the flattened one; the curve with the fewest violations is
  * kept, within the bounds of the automatic modes (no cusp, no span far from
- * its data); what
- * that cannot remove is reported (two neighbouring spans cannot both be
- * straight where the points turn). Continuity C2_FC
+ * its data); what that cannot remove is reported (two neighbouring spans
+ * cannot both be straight where the points turn). Continuity C2_FC
  * (approximation) sets x = y = 0 and alpha = beta >= FrenetOrder + 3: C2 and
  * Frenet frame continuous to order 2 FrenetOrder + 3 (Theorem 13).
  *

@@ -949,9 +949,8 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       // violations the straightening search runs too (see below), the curve
       // with the fewest kept (400 helices of 50 points, 0.1% noise:
       // straightening alone leaves 133 of 4993 violations, flattening first
-      // 11). One level: a
-      // knot is flattened or not (flattened halfway, the knots of a span
-      // took more rounds and left more). Neighbouring knots flattened make
+      // 11). One level: a knot is flattened or not (flattened halfway, the
+      // knots of a span took more rounds and left more). Neighbouring knots flattened make
       // the interpolation singular (its control points free to alternate),
       // so a twisting span does not raise its neighbours with it.
       ShapeLadder flattening;
@@ -986,8 +985,9 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       // flattened one (its knots kept flat under the spans it straightens:
       // the two agree at a straightened span's knots); the curve with the
       // fewest violations is kept. Neither start wins everywhere: the
-      // benchmark's users' data over 12 seeds, 237 violations left from the
-      // unflattened curve alone, 322 from the flattened one alone, 197 from both.
+      // users'-data generator over 12 seeds (Math core), 237 violations left
+      // from the unflattened curve alone, 322 from the flattened one alone,
+      // 197 from both.
       std::vector<double> flattenedKnots;
       if (const auto* flattened = dynamic_cast<const QQRSpline*>(built.Spline.get()))
       {
