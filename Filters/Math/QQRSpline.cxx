@@ -950,9 +950,10 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       // with the fewest kept (400 helices of 50 points, 0.1% noise:
       // straightening alone leaves 133 of 4993 violations, flattening first
       // 11). One level: a knot is flattened or not (flattened halfway, the
-      // knots of a span took more rounds and left more). Neighbouring knots flattened make
-      // the interpolation singular (its control points free to alternate),
-      // so a twisting span does not raise its neighbours with it.
+      // knots of a span took more rounds and left more). Neighbouring knots
+      // flattened make the interpolation singular (its control points free
+      // to alternate), so a twisting span does not raise its neighbours
+      // with it.
       ShapeLadder flattening;
       flattening.TopLevel = 1;
       // A flattened knot moves the curve far along a run of flattened knots
