@@ -53,6 +53,9 @@ struct LineWork
   double Length = 0.0; ///< of the sampled curve
   double Chord = 0.0;  ///< distance between its ends (0 when closed)
   double LargestCurvature = 0.0; ///< of the samples
+  /// An interpolated line's points where it runs straight back on itself
+  /// (shapesplines::reversals; indices of Fit.Data): a cusp in every family.
+  std::vector<int> Reversals;
   std::string Error;
 };
 
@@ -520,6 +523,10 @@ void FitInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines, vtkPoints* 
       try
       {
         line.Fit = shapesplines::fitPolyline(points, lineOptions, build, values);
+        if (line.Fit.Spline && line.Fit.interpolates())
+        {
+          line.Reversals = shapesplines::reversals(line.Fit.Data);
+        }
       }
       catch (const std::exception& e)
       {
@@ -569,7 +576,7 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
                                     << " point spacing causes this; try Centripetal parameterization"
                                     << " or resample the line.");
   }
-  if (fit.Spline && fit.Audit.StrayingSpans > 0)
+  if (fit.Spline && fit.Audit.StrayingSpans > 0 && line.Reversals.empty())
   {
     vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): the curve strays "
                                     << fit.Audit.PolygonDeviation << " local segment lengths from "
@@ -613,6 +620,47 @@ void ReportShapeViolations(
                                   << "reference polygon) from 0." << lineText.str());
 }
 
+/// One message a run for the interpolated lines that run straight back on
+/// themselves, where every smooth curve through the points has a cusp and
+/// leaves them (the curvature spike's and the straying span's warnings, which
+/// would blame the family or the spacing, are not given for those lines).
+void ReportReversals(
+  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
+{
+  constexpr size_t DescribedLines = 3;
+  std::ostringstream lineText;
+  size_t count = 0;
+  for (const size_t k : kept)
+  {
+    const LineWork& line = lines[k];
+    if (line.Reversals.empty())
+    {
+      continue;
+    }
+    if (count++ < DescribedLines)
+    {
+      lineText << " Line (" << line.Name << "): " << line.Reversals.size() << " point(s), the "
+               << "first its point " << line.Fit.Data.SourceIndex[line.Reversals.front()] << ".";
+    }
+  }
+  if (count > DescribedLines)
+  {
+    lineText << " And " << count - DescribedLines << " more line(s).";
+  }
+  if (count > 0)
+  {
+    vtkWarningWithObjectMacro(self, << count << " line(s) run straight back on themselves: a "
+                                    << "smooth curve through a point where the line turns by 180 "
+                                    << "degrees stops there and turns (a cusp, curvature without "
+                                    << "bound), in every family, and may stray from the points "
+                                    << "there. Remove the back-and-forth points (a streamline "
+                                    << "oscillating about a critical point: fewer Maximum Steps, "
+                                    << "or a larger Terminal Speed), split the line there, or "
+                                    << "approximate it (Mode Approximate of the tension quintic or "
+                                    << "the variable degree spline)." << lineText.str());
+  }
+}
+
 /**
  * The messages about the fits, serially (VTK's messages are not
  * thread-safe): an error for each line that failed, the warnings about each
@@ -649,6 +697,7 @@ std::vector<size_t> ReportFits(
                                     << "curvature and torsion then follow the noise, and Mode "
                                     << "Approximate gives the curve's own.");
   }
+  ReportReversals(self, lines, kept);
   if (!violatingLines.empty())
   {
     ReportShapeViolations(self, lines, violatingLines);
@@ -903,64 +952,16 @@ void WriteSamplesInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines,
     sampling, [&] { vtkSMPTools::For(0, static_cast<vtkIdType>(kept.size()), writeRange); });
 }
 
-/// One message a run for the interpolated lines that run straight back on
-/// themselves, where every smooth curve through the points has a cusp (the
-/// curvature spike's warning would blame the family). Returns per line
-/// whether it does.
-std::vector<char> ReportReversals(
-  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
-{
-  constexpr size_t DescribedLines = 3;
-  std::vector<char> reversing(lines.size(), 0);
-  std::ostringstream lineText;
-  size_t count = 0;
-  for (const size_t k : kept)
-  {
-    const shapesplines::FittedPolyline& fit = lines[k].Fit;
-    if (!fit.Spline || !fit.interpolates())
-    {
-      continue;
-    }
-    const std::vector<int> points = shapesplines::reversals(fit.Data);
-    if (points.empty())
-    {
-      continue;
-    }
-    reversing[k] = 1;
-    if (count++ < DescribedLines)
-    {
-      lineText << " Line (" << lines[k].Name << "): " << points.size() << " point(s), the first "
-               << "its point " << fit.Data.SourceIndex[points.front()] << ".";
-    }
-  }
-  if (count > DescribedLines)
-  {
-    lineText << " And " << count - DescribedLines << " more line(s).";
-  }
-  if (count > 0)
-  {
-    vtkWarningWithObjectMacro(self, << count << " line(s) run straight back on themselves: a "
-                                    << "smooth curve through a point where the line turns by 180 "
-                                    << "degrees stops there and turns (a cusp, curvature without "
-                                    << "bound), in every family. Remove the back-and-forth points "
-                                    << "(a streamline oscillating about a critical point: fewer "
-                                    << "Maximum Steps, or a larger Terminal Speed), split the line "
-                                    << "there, or approximate it (Mode Approximate of the tension "
-                                    << "quintic or the variable degree spline)." << lineText.str());
-  }
-  return reversing;
-}
-
 /// A curvature a million times the line's size is a cusp or a kink, not the
 /// shape of the data (where the line runs back on itself, ReportReversals
-/// says why).
-void ReportCurvatureSpikes(vtkAlgorithm* self, const std::vector<LineWork>& lines,
-  const std::vector<size_t>& kept, const std::vector<char>& reversing)
+/// has said why).
+void ReportCurvatureSpikes(
+  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
 {
   for (const size_t k : kept)
   {
     const LineWork& line = lines[k];
-    if (reversing[k])
+    if (!line.Reversals.empty())
     {
       continue;
     }
@@ -1213,7 +1214,7 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
     return 1; // an aborted run leaves the output empty
   }
   this->UpdateProgress(0.95);
-  ReportCurvatureSpikes(this, lines, kept, ReportReversals(this, lines, kept));
+  ReportCurvatureSpikes(this, lines, kept);
   samples.AddTo(output, this->VMTKArrayNames);
   WriteCellData(readable.Cells, output, *gathered, kept, parameterNames);
   // The fits freed in parallel, not one after another when the lines go

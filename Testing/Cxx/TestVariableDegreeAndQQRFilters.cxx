@@ -482,8 +482,9 @@ TEST(AutomaticShapeFilters, ALineThatRunsStraightBackIsNamedNotBlamedOnTheFamily
   // streamline oscillating about a critical point): every smooth curve
   // through them stops at the turns (a cusp). One warning names the line
   // and its first such point, instead of a curvature spike warning that
-  // recommends another family; the clean helix beside it is not named; an
-  // approximation, which does not pass through the points, has none.
+  // recommends another family and a straying span's that blames the
+  // spacing; the clean helix beside it is not named; an approximation,
+  // which does not pass through the points, has none.
   Polyline helix;
   for (int i = 0; i < 40; ++i)
   {
@@ -504,6 +505,12 @@ TEST(AutomaticShapeFilters, ALineThatRunsStraightBackIsNamedNotBlamedOnTheFamily
   EXPECT_EQ(CountMessages(tensioned.Warnings, { "run straight back", "cell 1" }), 0);
   EXPECT_EQ(CountMessages(tensioned.Warnings, { "cusp or a kink" }), 0)
     << Joined(tensioned.Warnings);
+  const FilterRun interpolated = RunFilter<Quintic>(data);
+  EXPECT_EQ(CountMessages(interpolated.Warnings, { "1 line(s) run straight back", "cell 0" }), 1)
+    << Joined(interpolated.Warnings);
+  EXPECT_EQ(CountMessages(interpolated.Warnings, { "strays" }), 0) << Joined(interpolated.Warnings);
+  EXPECT_EQ(CountMessages(interpolated.Warnings, { "cusp or a kink" }), 0)
+    << Joined(interpolated.Warnings);
   const FilterRun approximated =
     RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); });
   EXPECT_EQ(CountMessages(approximated.Warnings, { "run straight back" }), 0)
