@@ -664,8 +664,9 @@ void ReportReversals(
 /**
  * The messages about the fits, serially (VTK's messages are not
  * thread-safe): an error for each line that failed, the warnings about each
- * other line, then one about the noisy lines and one about the violations
- * left. Returns the lines that go to the output, in input order.
+ * other line, then one about the noisy lines, one about the lines that run
+ * back on themselves and one about the violations left. Returns the lines
+ * that go to the output, in input order.
  */
 std::vector<size_t> ReportFits(
   vtkAlgorithm* self, const std::vector<LineWork>& lines, bool approximates, bool adjustsShape)
