@@ -798,67 +798,70 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
   std::vector<int> fewest = failuresPerWindow(earlier.Audit);
   std::vector<int> assembled = earlier.Levels;
 
+  // A search started from a level (or levels) around what the first search
+  // left failing; none where the start takes too many rebuilds or its system
+  // is singular (a level the first search never reached: not a start).
+  auto started = [&](const ShapeLadder& searchLadder,
+                   const auto& start) -> std::unique_ptr<ShapeSearch> {
+    auto search = std::make_unique<ShapeSearch>(context, reference, searchLadder, true);
+    search->keepOutside(earlier, RetryReach);
+    try
+    {
+      if (search->startAt(start))
+      {
+        return search;
+      }
+    }
+    catch (const SingularSystem&)
+    {
+      // not a start
+    }
+    return nullptr;
+  };
+  // The assembled start's ladder (a search keeps its ladder by reference).
+  ShapeLadder shortSearch = ladder;
+  shortSearch.MaxRounds = std::min(ladder.MaxRounds, AssembledStartRounds);
   std::unique_ptr<ShapeSearch> best;
   int violations = earlier.Audit.violations();
+  auto keepIfFewer = [&](std::unique_ptr<ShapeSearch> search) {
+    if (search && search->violations() < violations)
+    {
+      violations = search->violations();
+      best = std::move(search);
+    }
+  };
   for (const int level : commonLevels(ladder.TopLevel))
   {
     if (violations == 0)
     {
       break;
     }
-    auto search = std::make_unique<ShapeSearch>(context, reference, ladder, true);
-    search->keepOutside(earlier, RetryReach);
-    try
+    std::unique_ptr<ShapeSearch> search = started(ladder, level);
+    if (!search)
     {
-      if (!search->startAt(level))
+      continue;
+    }
+    const std::vector<int> failures = failuresPerWindow(search->audit());
+    for (int j = 0; j < spans; ++j)
+    {
+      if (window[j] >= 0 && failures[window[j]] < fewest[window[j]])
       {
-        continue;
-      }
-      const std::vector<int> failures = failuresPerWindow(search->audit());
-      for (int j = 0; j < spans; ++j)
-      {
-        if (window[j] >= 0 && failures[window[j]] < fewest[window[j]])
-        {
-          assembled[j] = search->levels()[j];
-        }
-      }
-      for (int w = 0; w < windows; ++w)
-      {
-        fewest[w] = std::min(fewest[w], failures[w]);
-      }
-      if (search->violations() < violations)
-      {
-        violations = search->violations();
-        best = std::move(search);
+        assembled[j] = search->levels()[j];
       }
     }
-    catch (const SingularSystem&)
+    for (int w = 0; w < windows; ++w)
     {
-      // A level the first search never reached: not a start.
+      fewest[w] = std::min(fewest[w], failures[w]);
     }
+    keepIfFewer(std::move(search));
   }
   // Each window at the level it failed least at: on a long line no single
   // level beats the first search everywhere. Searched from for a few rounds
   // only (a 1e5-point noisy helix left 4808 violations after 2 rounds, 4791
   // after 8 and 4785 after 64, which cost 50% more time than 8).
-  ShapeLadder shortSearch = ladder;
-  shortSearch.MaxRounds = std::min(ladder.MaxRounds, AssembledStartRounds);
   if (windows > 1 && violations > 0 && assembled != earlier.Levels)
   {
-    auto search = std::make_unique<ShapeSearch>(context, reference, shortSearch, true);
-    search->keepOutside(earlier, RetryReach);
-    try
-    {
-      if (search->startAt(assembled) && search->violations() < violations)
-      {
-        violations = search->violations();
-        best = std::move(search);
-      }
-    }
-    catch (const SingularSystem&)
-    {
-      // As a common level's start.
-    }
+    keepIfFewer(started(shortSearch, assembled));
   }
   if (!best)
   {
