@@ -27,10 +27,12 @@
 #include <atomic>
 #include <cmath>
 #include <chrono>
+#include <cstddef>
 #include <cstdlib>
 #include <exception>
 #include <future>
 #include <initializer_list>
+#include <iterator>
 #include <new>
 #include <optional>
 #include <sstream>
@@ -53,11 +55,36 @@ struct LineWork
   double Length = 0.0; ///< of the sampled curve
   double Chord = 0.0;  ///< distance between its ends (0 when closed)
   double LargestCurvature = 0.0; ///< of the samples
-  /// An interpolated line's points where it runs straight back on itself
-  /// (shapesplines::reversals; indices of Fit.Data): a cusp in every family.
-  std::vector<int> Reversals;
   std::string Error;
 };
+
+/// How many points of an interpolated line run straight back
+/// (DiscreteShape::Reversal): every smooth curve through them has a cusp.
+std::ptrdiff_t Reversals(const LineWork& line)
+{
+  const shapesplines::FittedPolyline& fit = line.Fit;
+  const std::vector<char>& reversal = fit.Shape.Reversal;
+  return fit.Spline && fit.interpolates() ? std::count(reversal.begin(), reversal.end(), 1) : 0;
+}
+
+/// " Line (name): what." for the first few of the lines given, then how many more.
+template <class Describe>
+std::string DescribeLines(
+  const std::vector<LineWork>& lines, const std::vector<size_t>& which, const Describe& describe)
+{
+  constexpr size_t DescribedLines = 3;
+  std::ostringstream text;
+  for (size_t j = 0; j < which.size() && j < DescribedLines; ++j)
+  {
+    const LineWork& line = lines[which[j]];
+    text << " Line (" << line.Name << "): " << describe(line) << ".";
+  }
+  if (which.size() > DescribedLines)
+  {
+    text << " And " << which.size() - DescribedLines << " more line(s).";
+  }
+  return text.str();
+}
 
 vtkSmartPointer<vtkDoubleArray> NewArray(const char* name, int components, vtkIdType tuples)
 {
@@ -523,10 +550,6 @@ void FitInParallel(vtkAlgorithm* self, std::vector<LineWork>& lines, vtkPoints* 
       try
       {
         line.Fit = shapesplines::fitPolyline(points, lineOptions, build, values);
-        if (line.Fit.Spline && line.Fit.interpolates())
-        {
-          line.Reversals = shapesplines::reversals(line.Fit.Data);
-        }
       }
       catch (const std::exception& e)
       {
@@ -576,7 +599,7 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
                                     << " point spacing causes this; try Centripetal parameterization"
                                     << " or resample the line.");
   }
-  if (fit.Spline && fit.Audit.StrayingSpans > 0 && line.Reversals.empty())
+  if (fit.Spline && fit.Audit.StrayingSpans > 0 && Reversals(line) == 0)
   {
     vtkWarningWithObjectMacro(self, "Line (" << line.Name << "): the curve strays "
                                     << fit.Audit.PolygonDeviation << " local segment lengths from "
@@ -601,23 +624,14 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
 void ReportShapeViolations(
   vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& violatingLines)
 {
-  constexpr size_t DescribedLines = 3;
-  std::ostringstream lineText;
-  for (size_t j = 0; j < violatingLines.size() && j < DescribedLines; ++j)
-  {
-    const LineWork& line = lines[violatingLines[j]];
-    lineText << " Line (" << line.Name << "): " << DescribeFailures(line.Fit.Audit) << ".";
-  }
-  if (violatingLines.size() > DescribedLines)
-  {
-    lineText << " And " << violatingLines.size() - DescribedLines << " more line(s).";
-  }
+  const std::string lineText = DescribeLines(lines, violatingLines,
+    [](const LineWork& line) { return DescribeFailures(line.Fit.Audit); });
   vtkWarningWithObjectMacro(self, << violatingLines.size() << " line(s) keep shape violations "
                                   << "the automatic mode could not remove without a cusp or a "
                                   << "curvature beyond its bounds; each keeps the best curve found "
                                   << "(cell array ShapeViolations). Knots and spans count the "
                                   << "line's distinct points (approximations: the vertices of the "
-                                  << "reference polygon) from 0." << lineText.str());
+                                  << "reference polygon) from 0." << lineText);
 }
 
 /// One message a run for the interpolated lines that run straight back on
@@ -627,38 +641,28 @@ void ReportShapeViolations(
 void ReportReversals(
   vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& kept)
 {
-  constexpr size_t DescribedLines = 3;
-  std::ostringstream lineText;
-  size_t count = 0;
-  for (const size_t k : kept)
+  std::vector<size_t> reversing;
+  std::copy_if(kept.begin(), kept.end(), std::back_inserter(reversing),
+    [&](size_t k) { return Reversals(lines[k]) > 0; });
+  if (reversing.empty())
   {
-    const LineWork& line = lines[k];
-    if (line.Reversals.empty())
-    {
-      continue;
-    }
-    if (count++ < DescribedLines)
-    {
-      lineText << " Line (" << line.Name << "): " << line.Reversals.size() << " point(s), the "
-               << "first its point " << line.Fit.Data.SourceIndex[line.Reversals.front()] << ".";
-    }
+    return;
   }
-  if (count > DescribedLines)
-  {
-    lineText << " And " << count - DescribedLines << " more line(s).";
-  }
-  if (count > 0)
-  {
-    vtkWarningWithObjectMacro(self, << count << " line(s) run straight back on themselves: a "
-                                    << "smooth curve through a point where the line turns by 180 "
-                                    << "degrees stops there and turns (a cusp, curvature without "
-                                    << "bound), in every family, and may stray from the points "
-                                    << "there. Remove the back-and-forth points (a streamline "
-                                    << "oscillating about a critical point: fewer Maximum Steps, "
-                                    << "or a larger Terminal Speed), split the line there, or "
-                                    << "approximate it (Mode Approximate of the tension quintic or "
-                                    << "the variable degree spline)." << lineText.str());
-  }
+  const std::string lineText = DescribeLines(lines, reversing, [](const LineWork& line) {
+    const shapesplines::FittedPolyline& fit = line.Fit;
+    const auto first = std::find(fit.Shape.Reversal.begin(), fit.Shape.Reversal.end(), 1);
+    return std::to_string(Reversals(line)) + " point(s), the first its point " +
+      std::to_string(fit.Data.SourceIndex[first - fit.Shape.Reversal.begin()]);
+  });
+  vtkWarningWithObjectMacro(self, << reversing.size() << " line(s) run straight back on "
+                                  << "themselves: a smooth curve through a point where the line "
+                                  << "turns by 180 degrees stops there and turns (a cusp, "
+                                  << "curvature without bound), in every family, and may stray "
+                                  << "from the points there. Remove the back-and-forth points (a "
+                                  << "streamline oscillating about a critical point: fewer Maximum "
+                                  << "Steps, or a larger Terminal Speed), split the line there, or "
+                                  << "approximate it (Mode Approximate of the tension quintic or "
+                                  << "the variable degree spline)." << lineText);
 }
 
 /**
@@ -962,7 +966,7 @@ void ReportCurvatureSpikes(
   for (const size_t k : kept)
   {
     const LineWork& line = lines[k];
-    if (!line.Reversals.empty())
+    if (Reversals(line) > 0)
     {
       continue;
     }

@@ -44,22 +44,6 @@ const char* shapeCriterionName(ShapeCriterion criterion)
   }
 }
 
-std::vector<int> reversals(const CleanPolyline& data, double tolerance)
-{
-  const int n = static_cast<int>(data.Points.size());
-  std::vector<int> found;
-  for (int i = data.Closed ? 0 : 1; i < (data.Closed ? n : n - 1) && n > 2; ++i)
-  {
-    const Vec3 before = data.segment((i - 1 + n) % n).stableNormalized();
-    const Vec3 after = data.segment(i).stableNormalized();
-    if (before.dot(after) < 0.0 && before.cross(after).norm() <= tolerance)
-    {
-      found.push_back(i);
-    }
-  }
-  return found;
-}
-
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
   const std::vector<double>& vertexNoise, double coordinateNoise)
 {
@@ -73,6 +57,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
   shape.Curvature.assign(n, 0.0);
   shape.Collinear.assign(n, 0);
   shape.Convex.assign(n, 0);
+  shape.Reversal.assign(n, 0);
   shape.Torsion.assign(std::max(spans, 0), 0.0);
   shape.Coplanar.assign(std::max(spans, 0), 0);
   shape.Twisted.assign(std::max(spans, 0), 0);
@@ -106,6 +91,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
     const bool significant = turn > NoiseSignificance * noiseTurn;
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
+    shape.Reversal[i] = straight && unit[before].dot(unit[i]) < 0;
     shape.Convex[i] = !straight && significant;
   }
   // Between points that turn opposite ways the curve has an inflection. A

@@ -36,6 +36,11 @@ struct DiscreteShape
   std::vector<double> Curvature;
   std::vector<char> Collinear; ///< criterion (i) applies at this point
   std::vector<char> Convex;    ///< B_i != 0: criterion (ii.1) applies
+  /// The line runs straight back at this point (its segments opposite, B_i
+  /// = 0 within tolerance): a smooth curve through it stops there and turns
+  /// (a cusp), whatever the family; no criterion applies. Streamlines
+  /// oscillating about a critical point and retraced paths have them.
+  std::vector<char> Reversal;
   std::vector<double> Torsion; ///< per segment
   /// Per segment: criterion (iii) applies (not where TorsionCrossing).
   std::vector<char> Coplanar;
@@ -64,16 +69,6 @@ struct DiscreteShape
  */
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
   const std::vector<double>& vertexNoise = {}, double coordinateNoise = 0.0);
-
-/**
- * The points where a polyline runs straight back on itself: the segments
- * before and after them opposite, within tolerance (the sine of the angle
- * between them, as for collinear points). A smooth curve through such a
- * point stops there and turns (a cusp), whatever the family: Definition 1
- * asks nothing there, and the curvature has no bound. Streamlines
- * oscillating about a critical point and retraced paths have them.
- */
-std::vector<int> reversals(const CleanPolyline& data, double tolerance = ShapeTolerances{}.Data);
 
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).

@@ -446,7 +446,19 @@ TEST(DiscreteShape, ReversalsAreWhereTheLineRunsStraightBack)
   // turns (170 degrees) is none; running back within the collinearity
   // tolerance (a turn of 180 degrees less 1e-8) is one; so is a closed
   // line's seam where it runs back along its first segment; a straight run
-  // forwards is none.
+  // forwards is none (it is collinear).
+  const auto reversals = [](const CleanPolyline& line) {
+    const std::vector<char> flags = discreteShape(line).Reversal;
+    std::vector<int> at;
+    for (int i = 0; i < static_cast<int>(flags.size()); ++i)
+    {
+      if (flags[i])
+      {
+        at.push_back(i);
+      }
+    }
+    return at;
+  };
   const Vec3 bent(2 - std::cos(Pi / 18), std::sin(Pi / 18), 0);
   CleanPolyline line;
   line.Points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), bent,
@@ -460,4 +472,5 @@ TEST(DiscreteShape, ReversalsAreWhereTheLineRunsStraightBack)
   EXPECT_EQ(reversals(closed), std::vector<int>({ 0, 2 }));
   closed.Closed = false;
   EXPECT_TRUE(reversals(closed).empty());
+  EXPECT_TRUE(discreteShape(closed).Collinear[1]);
 }
