@@ -512,6 +512,22 @@ struct Family
   bool AlwaysPreserves; ///< reaches zero violations on every line of usersData()
 };
 
+/// Whether a curve's span parameter of that name (qqr's "Flattening",
+/// "Straightness") is above 0 on some span.
+bool movedSomewhere(const Curve& curve, const std::string& name)
+{
+  for (const SpanParameter& parameter : curve.spanParameters())
+  {
+    const auto& values = parameter.Values;
+    if (parameter.Name == name &&
+      std::any_of(values.begin(), values.end(), [](double value) { return value > 0.0; }))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::vector<Family> families()
 {
   GeneralizedCubicOptions generalized;
@@ -592,12 +608,7 @@ TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
     fixedTotal += fixed.Audit.violations();
     automaticTotal += automatic.Audit.violations();
     EXPECT_TRUE(withinBounds(boundFigures(automatic))) << "seed " << seed;
-    for (const SpanParameter& parameter : automatic.Spline->spanParameters())
-    {
-      const auto& values = parameter.Values;
-      flattenedLines += parameter.Name == "Flattening" &&
-        std::any_of(values.begin(), values.end(), [](double f) { return f > 0.0; });
-    }
+    flattenedLines += movedSomewhere(*automatic.Spline, "Flattening");
   }
   std::printf("qqr on 20 noisy helices: %d violations fixed, %d automatic; %d lines flattened\n",
     fixedTotal, automaticTotal, flattenedLines);
@@ -625,15 +636,8 @@ TEST(AutomaticShape, QQRsStraighteningStartsFromTheFlattenedCurveToo)
     automaticTotal += automatic.Audit.violations();
     EXPECT_TRUE(withinBounds(boundFigures(automatic))) << "seed " << seed;
     EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << "seed " << seed;
-    bool flattened = false, straightened = false;
-    for (const SpanParameter& parameter : automatic.Spline->spanParameters())
-    {
-      const bool moved = std::any_of(
-        parameter.Values.begin(), parameter.Values.end(), [](double value) { return value > 0.0; });
-      flattened |= parameter.Name == "Flattening" && moved;
-      straightened |= parameter.Name == "Straightness" && moved;
-    }
-    bothMoves += flattened && straightened;
+    bothMoves += movedSomewhere(*automatic.Spline, "Flattening") &&
+      movedSomewhere(*automatic.Spline, "Straightness");
   }
   std::printf("qqr on 20 noisy trefoils: %d violations fixed, %d automatic; %d lines flattened and "
               "straightened\n",
