@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <optional>
 
 namespace shapesplines
@@ -194,6 +195,113 @@ public:
       }
     }
     return this->finish(round);
+  }
+
+  /**
+   * Where the searches left violations: each span near one left failing
+   * (nearest first, RefineReach on each side) tried alone at a few other
+   * levels (refinedLevels), the curve rebuilt and audited around it, the
+   * change kept where it lowers the violations within the bounds; twice
+   * over, at most `trials` builds. The curve audited whole if it has fewer
+   * violations than found, none otherwise.
+   */
+  std::optional<AutomaticShape> refine(const AutomaticShape& found, int trials)
+  {
+    this->start(); // level 0's curvatures, for ShapeBounds::CurvatureChange
+    this->Levels = found.Levels;
+    this->buildWhole();
+    std::vector<Figures> before(this->Spans);
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      before[j] = this->figures(j);
+    }
+    auto withinBounds = [&](const std::vector<int>& spans) {
+      return std::none_of(spans.begin(), spans.end(),
+        [&](int j) { return this->beyond(this->figures(j), before[j]); });
+    };
+    int violations = this->violations();
+    std::vector<int> keptLevels = this->Levels;
+    std::unique_ptr<shapesplines::Curve> kept = std::move(this->Curve);
+    // The spans last audited on a trial's curve that was not kept, audited
+    // again on the kept one only once a trial elsewhere needs them (the next
+    // trial is mostly around the same span).
+    std::vector<int> rejected;
+    auto restoreOutside = [&](const std::vector<int>& moved) {
+      for (const int k : rejected)
+      {
+        if (std::find(moved.begin(), moved.end(), k) == moved.end())
+        {
+          this->Auditor.audit(*kept, k);
+        }
+      }
+      rejected.clear();
+    };
+    for (int pass = 0; pass < RefinePasses && violations > 0; ++pass)
+    {
+      restoreOutside({});
+      const std::vector<char> failing = failingSpans(this->Auditor.result());
+      const int violationsBefore = violations;
+      for (int f = 0; f < this->Spans && violations > 0 && trials > 0; ++f)
+      {
+        reportProgress(this->Context.Options.Progress, f, 64, static_cast<double>(f) / this->Spans);
+        for (int offset = 0; offset <= 2 * RefineReach && failing[f]; ++offset)
+        {
+          const int j = this->span(f + (offset % 2 ? -1 : 1) * ((offset + 1) / 2));
+          for (const int level : j < 0 ? std::vector<int>{} : this->refinedLevels(keptLevels[j]))
+          {
+            if (trials-- <= 0)
+            {
+              break;
+            }
+            std::vector<char> marked(this->Spans, 0);
+            marked[j] = 1;
+            const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
+            this->Levels = keptLevels;
+            this->Levels[j] = level;
+            try
+            {
+              this->rebuild(moved);
+            }
+            catch (const SingularSystem&)
+            {
+              continue; // not a curve: the kept one stays
+            }
+            restoreOutside(moved);
+            const int now = this->Auditor.result().violations();
+            if (now < violations && withinBounds(moved))
+            {
+              violations = now;
+              keptLevels = this->Levels;
+              kept = std::move(this->Curve);
+            }
+            else
+            {
+              rejected = moved;
+            }
+          }
+        }
+      }
+      if (violations == violationsBefore)
+      {
+        break;
+      }
+    }
+    this->Levels = keptLevels;
+    this->Curve = std::move(kept);
+    std::fill(this->Stale.begin(), this->Stale.end(), 1);
+    this->auditStale(); // a global solve moves far spans a little
+    std::vector<int> all(this->Spans);
+    std::iota(all.begin(), all.end(), 0);
+    if (this->violations() >= found.Audit.violations() || !withinBounds(all))
+    {
+      return std::nullopt;
+    }
+    AutomaticShape result;
+    result.Rounds = found.Rounds;
+    result.Spline = std::move(this->Curve);
+    result.Audit = std::move(this->Audit);
+    result.Levels = std::move(this->Levels);
+    return result;
   }
 
 private:
@@ -388,6 +496,27 @@ private:
       }
     }
     return false;
+  }
+
+  /**
+   * The levels refine() tries a span at, other than its own: 0 and 1 (the
+   * searches raise a neighbourhood together and overshoot: most of what
+   * refining mends on short noisy lines) and a quarter, half and all of the
+   * top (where a span stalled or met the bounds short of the level that mends it).
+   */
+  std::vector<int> refinedLevels(int level) const
+  {
+    const int top = this->Ladder.TopLevel;
+    std::vector<int> levels;
+    for (const int other : { 0, 1, top / 4, top / 2, top })
+    {
+      if (other != level && other <= top &&
+        std::find(levels.begin(), levels.end(), other) == levels.end())
+      {
+        levels.push_back(other);
+      }
+    }
+    return levels;
   }
 
   bool canRise(int j) const
@@ -754,6 +883,7 @@ std::vector<int> commonLevels(int top)
 /// Rounds of the search from the windows' assembled levels (searchFromCommonLevel).
 constexpr int AssembledStartRounds = 2;
 
+
 /**
  * The search again from a common level: every span at levels 3, 5, 8, 12,
  * ... up to the top (one or two up, the first search has tried; level 0
@@ -918,6 +1048,26 @@ AutomaticShape preserveShapeAutomatically(
     if (again && again->Audit.violations() < found.Audit.violations())
     {
       found = std::move(*again);
+    }
+  }
+  // Each trial builds the whole line: a long one is hardly refined.
+  const long points = std::max(1L, static_cast<long>(reference.Points.size()));
+  const int trials = static_cast<int>(std::min(
+    RefineTrialsPerSpan * reference.numberOfSpans(), RefinePointBuilds / points));
+  if (ladder.Refine && !ladder.Uniform && trials > 0 && found.Audit.violations() > 0)
+  {
+    try
+    {
+      std::optional<AutomaticShape> refined =
+        ShapeSearch(context, reference, ladder, ladder.RaiseTwistNeighbours).refine(found, trials);
+      if (refined)
+      {
+        found = std::move(*refined);
+      }
+    }
+    catch (const SingularSystem&)
+    {
+      // As above: the searches' curve stays.
     }
   }
   return found;

@@ -80,6 +80,11 @@ struct ShapeLadder
   /// alone meets the bounds long before the level that mends it. For
   /// interpolations (it ignores CurvatureChange).
   bool RetryFromCommonLevel = false;
+  /// Where the searches leave violations, try each span near one left
+  /// failing alone at a few other levels and keep what lowers the violations
+  /// within the bounds (see preserveShapeAutomatically; a Uniform ladder is
+  /// not refined).
+  bool Refine = true;
   int MaxRounds = 64;
   ShapeBounds Bounds;
   /// Per vertex of the reference polygon, how far it moves with the noise
@@ -96,6 +101,16 @@ struct ShapeLadder
  * the retries in windows leave none, in two thirds of the time).
  */
 constexpr int RetryReach = 32;
+
+/// How many spans on each side of one left failing refining tries (see
+/// preserveShapeAutomatically), how many times over, and its cost: at most
+/// RefineTrialsPerSpan builds a span of the line, and at most
+/// RefinePointBuilds points built in all (each build solves the whole line:
+/// a line of 1e4 points is hardly refined, one of 50 up to 196 builds).
+constexpr int RefineReach = 2;
+constexpr int RefinePasses = 2;
+constexpr long RefineTrialsPerSpan = 4;
+constexpr long RefinePointBuilds = 1L << 15;
 
 /// The automatic mode's curve, its audit against the reference and the levels chosen.
 struct AutomaticShape
@@ -127,7 +142,17 @@ struct AutomaticShape
  * best curve met: the fewest violations, among those within the bounds (of a
  * second search, ShapeLadder::RetrySpanBySpan, or a third,
  * ShapeLadder::RetryFromCommonLevel, if it has fewer; both only within
- * RetryReach of the spans left failing).
+ * RetryReach of the spans left failing). Where violations are left, refines
+ * (ShapeLadder::Refine): each span within RefineReach of one left failing,
+ * nearest first, is tried alone at levels 0 and 1 and at a quarter, half
+ * and all of the top, rebuilt and audited around it, and the change kept
+ * where it lowers the violations within the bounds; the refined curve,
+ * audited whole, is kept if it has fewer. The searches raise a neighbourhood
+ * together, overshoot, and freeze a span whose raise stalls: on 100 random
+ * 3D polylines of 60 points refining takes the generalized cubic from 14
+ * violations left to 0, the variable degree spline from 10 to 0, qqr from
+ * 96 to 27 and the quintic from 81 to 38, mostly by lowering a span to
+ * level 0 or 1.
  * Progress is reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(

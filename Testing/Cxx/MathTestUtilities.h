@@ -337,6 +337,13 @@ inline bool withinBounds(const BoundFigures& figures)
 {
   return figures.Curvature <= (figures.StraightRuns ? 1e4 : 1e3) && figures.Speed >= 1e-3;
 }
+
+/// An automatic curve's figures within the bounds, or no worse than its fixed curve's.
+inline bool withinBoundsOrNoWorse(const BoundFigures& automatic, const BoundFigures& fixed)
+{
+  return withinBounds(automatic) ||
+    (automatic.Curvature <= fixed.Curvature && automatic.Speed >= fixed.Speed);
+}
 } // namespace shapesplines::test
 
 #endif

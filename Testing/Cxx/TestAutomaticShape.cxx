@@ -42,6 +42,8 @@ struct Toy
   bool RetryFromCommonLevel = false;
   bool RaiseTwistNeighbours = true;
   unsigned Mends = ~0u;
+  /// Refining after the searches (off: the tests of the search count its builds alone).
+  bool Refine = false;
   /// Raising this span makes the family's system singular (Build throws).
   int SingularSpan = -1;
   ProgressCallback Progress;
@@ -183,6 +185,7 @@ CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
     ladder.RetryFromCommonLevel = toy.RetryFromCommonLevel;
     ladder.RaiseTwistNeighbours = toy.RaiseTwistNeighbours;
     ladder.Mends = toy.Mends;
+    ladder.Refine = toy.Refine;
     ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
       if (++run.Builds == 2)
       {
@@ -443,6 +446,28 @@ TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
   EXPECT_LE(run.Builds, 10);
 }
 
+TEST(AutomaticShape, RefiningKeepsOnlyWhatLowersTheViolationsWithinItsBudget)
+{
+  // Raising only adds violations (the wiggling toy): refining after the
+  // search tries each span near one left failing at other levels, keeps
+  // none of them, and stops within its budget of builds.
+  const FittedPolyline cubic = fitPolyline(akima(), FitOptions{}, cubicBuilder());
+  Toy wiggling;
+  wiggling.Wiggle = 0.05;
+  ToyRun searched;
+  fitPolyline(akima(), FitOptions{}, toyBuilder(searched, wiggling));
+  wiggling.Refine = true;
+  ToyRun refined;
+  const FittedPolyline fit = fitPolyline(akima(), FitOptions{}, toyBuilder(refined, wiggling));
+  EXPECT_EQ(fit.Audit.violations(), cubic.Audit.violations());
+  EXPECT_EQ(std::count(refined.Levels.begin(), refined.Levels.end(), 0),
+    static_cast<long>(refined.Levels.size()));
+  const int spans = static_cast<int>(refined.Levels.size());
+  EXPECT_GT(refined.Builds, searched.Builds); // refining tried
+  // Its trials, the start's curve and the searches' built again.
+  EXPECT_LE(refined.Builds, searched.Builds + RefineTrialsPerSpan * spans + 2);
+}
+
 TEST(AutomaticShape, GivesUpAfterRoundsThatMeetNoBetterCurve)
 {
   // Each raise mends its span and moves the twist two spans on: one
@@ -536,7 +561,7 @@ std::vector<Family> families()
   QQROptions qqr;
   std::vector<Family> all;
   all.push_back({ "generalized cubic", nullptr, generalizedCubicBuilder(generalized), true });
-  all.push_back({ "variable degree", nullptr, variableDegreeBuilder(degree), false });
+  all.push_back({ "variable degree", nullptr, variableDegreeBuilder(degree), true });
   all.push_back({ "tension quintic", nullptr, tensionQuinticBuilder(quintic), false });
   all.push_back({ "qqr", nullptr, qqrBuilder(qqr), false });
   generalized.Automatic = degree.Automatic = quintic.Automatic = qqr.Automatic = false;
@@ -553,9 +578,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
   // No cusp, ever: the largest curvature within 1e3 times the data's largest
   // discrete curvature (1e4 with straight runs), the speed above 1e-3 of the
   // chord's, or no worse than the fixed parameters' curve. Never more
-  // violations than the fixed parameters'; the generalized cubic removes
-  // them all, the variable degree spline all on helices, trefoils and
-  // staircases (its degrees reach their cap on some random polylines).
+  // violations than the fixed parameters'; the generalized cubic and the
+  // variable degree spline remove them all (on more random polylines, see
+  // RefiningMendsWhatTheSearchesLeaveOnRandomPolylines, a few are left).
   for (const Family& family : families())
   {
     int fixedTotal = 0, automaticTotal = 0;
@@ -570,23 +595,56 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnUsersDataKeepsTheCurveRegular)
       std::printf("%s, %s: violations %d -> %d, curvature / data's %.3g (fixed %.3g), lowest speed %.3g\n",
         family.Name, line.Name.c_str(), fixed.Audit.violations(), automatic.Audit.violations(),
         bounds.Curvature, start.Curvature, bounds.Speed);
-      EXPECT_TRUE(withinBounds(bounds) || (bounds.Curvature <= start.Curvature && bounds.Speed >= start.Speed))
+      EXPECT_TRUE(withinBoundsOrNoWorse(bounds, start))
         << family.Name << ", " << line.Name;
       EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << family.Name << ", " << line.Name;
-      const bool walk = line.Name.rfind("random walk", 0) == 0;
-      if (family.AlwaysPreserves || (std::string(family.Name) == "variable degree" && !walk))
+      if (family.AlwaysPreserves)
       {
         EXPECT_TRUE(automatic.Audit.preserving()) << family.Name << ", " << line.Name;
       }
     }
     std::printf("%s: %d violations fixed, %d automatic\n", family.Name, fixedTotal, automaticTotal);
     EXPECT_LT(automaticTotal, fixedTotal) << family.Name;
-    // qqr, by straightening spans, most (measured 29 of 511 left; its
-    // exponents alone left 262).
+    // qqr, by flattening and straightening spans, most (measured 8 of 457
+    // left, 18 before the searches' curves were refined; its exponents alone
+    // left 262 of 511).
     if (std::string(family.Name) == "qqr")
     {
-      EXPECT_LE(automaticTotal, 0.1 * fixedTotal);
+      EXPECT_LE(automaticTotal, 0.03 * fixedTotal);
     }
+  }
+}
+
+TEST(AutomaticShape, RefiningMendsWhatTheSearchesLeaveOnRandomPolylines)
+{
+  // Random 3D polylines of 60 points (turns of any angle, steps 0.5-1.5):
+  // the searches raise a neighbourhood together, overshoot, and freeze a
+  // span whose raise stalls. Refining their curves (each span near one left
+  // failing tried alone at other levels) leaves, of the 100 lines below,
+  // 5 violations for the generalized cubic, 0 for the variable degree
+  // spline, 40 for the quintic and 33 for qqr; the searches alone left 17,
+  // 7, 84 and 94. Within the bounds, never more than the fixed parameters'.
+  const std::vector<Family> all = families();
+  const std::map<std::string, int> most = { { "generalized cubic", 8 },
+    { "variable degree", 2 }, { "tension quintic", 60 }, { "qqr", 55 } };
+  for (const Family& family : all)
+  {
+    int fixedTotal = 0, automaticTotal = 0;
+    for (unsigned seed = 0; seed < 100; ++seed)
+    {
+      const std::vector<Vec3> points = randomWalk(60, seed);
+      const FittedPolyline fixed = fitPolyline(points, FitOptions{}, family.Fixed);
+      const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
+      fixedTotal += fixed.Audit.violations();
+      automaticTotal += automatic.Audit.violations();
+      EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations())
+        << family.Name << " " << seed;
+      EXPECT_TRUE(withinBoundsOrNoWorse(boundFigures(automatic), boundFigures(fixed)))
+        << family.Name << " " << seed;
+    }
+    std::printf("%s on 100 random polylines: %d violations fixed, %d automatic\n", family.Name,
+      fixedTotal, automaticTotal);
+    EXPECT_LE(automaticTotal, most.at(family.Name)) << family.Name;
   }
 }
 
@@ -672,8 +730,7 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
           fixedTotal += fixed.Audit.violations();
           automaticTotal += automatic.Audit.violations();
           largest = std::max(largest, bounds.Curvature);
-          EXPECT_TRUE(withinBounds(bounds) ||
-            (bounds.Curvature <= start.Curvature && bounds.Speed >= start.Speed))
+          EXPECT_TRUE(withinBoundsOrNoWorse(bounds, start))
             << family.Name << ", " << count << " points, noise " << noise << ", seed " << seed
             << ": curvature / data's " << bounds.Curvature << " (fixed " << start.Curvature
             << "), lowest speed " << bounds.Speed;
@@ -781,7 +838,7 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       fixedTotal += fixed.Audit.violations();
       automaticTotal += automatic.Audit.violations();
       largest = std::max(largest, bounds.Curvature);
-      EXPECT_TRUE(withinBounds(bounds) || (bounds.Curvature <= start.Curvature && bounds.Speed >= start.Speed))
+      EXPECT_TRUE(withinBoundsOrNoWorse(bounds, start))
         << family.Name << ", " << line.Points.size() << " points, closed " << line.Closed
         << ": curvature / data's " << bounds.Curvature << " (fixed " << start.Curvature << ")";
       EXPECT_LE(automatic.Audit.violations(), fixed.Audit.violations()) << family.Name;
