@@ -106,10 +106,10 @@ constexpr int RetryReach = 32;
 /// preserveShapeAutomatically), how many times over, and its cost: at most
 /// RefineTrialsPerSpan builds a span of the line, and at most
 /// RefinePointBuilds points built in all (each build solves the whole line:
-/// a line of 1e4 points is hardly refined, one of 50 up to 196 builds).
+/// a line of 1e4 points is hardly refined, one of 50 up to 98 builds).
 constexpr int RefineReach = 2;
 constexpr int RefinePasses = 2;
-constexpr long RefineTrialsPerSpan = 4;
+constexpr long RefineTrialsPerSpan = 2;
 constexpr long RefinePointBuilds = 1L << 15;
 
 /// The automatic mode's curve, its audit against the reference and the levels chosen.
@@ -149,10 +149,10 @@ struct AutomaticShape
  * where it lowers the violations within the bounds; the refined curve,
  * audited whole, is kept if it has fewer. The searches raise a neighbourhood
  * together, overshoot, and freeze a span whose raise stalls: on 100 random
- * 3D polylines of 60 points refining takes the generalized cubic from 14
- * violations left to 0, the variable degree spline from 10 to 0, qqr from
- * 96 to 27 and the quintic from 81 to 38, mostly by lowering a span to
- * level 0 or 1.
+ * 3D polylines of 60 points refining takes the generalized cubic from 17
+ * violations left to 5, the variable degree spline from 7 to 0, the quintic
+ * from 84 to 40 and qqr from 94 to 34, mostly by lowering a span to level
+ * 0 or 1 (or flattening one more of qqr's knots).
  * Progress is reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(
