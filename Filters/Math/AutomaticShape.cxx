@@ -883,7 +883,6 @@ std::vector<int> commonLevels(int top)
 /// Rounds of the search from the windows' assembled levels (searchFromCommonLevel).
 constexpr int AssembledStartRounds = 2;
 
-
 /**
  * The search again from a common level: every span at levels 3, 5, 8, 12,
  * ... up to the top (one or two up, the first search has tried; level 0
