@@ -207,7 +207,10 @@ public:
    */
   std::optional<AutomaticShape> refine(const AutomaticShape& found, int trials)
   {
-    this->start(); // level 0's curvatures, for ShapeBounds::CurvatureChange
+    if (this->Ladder.Bounds.CurvatureChange > 0.0)
+    {
+      this->start(); // level 0's curvatures, which that bound compares with
+    }
     this->Levels = found.Levels;
     this->buildWhole();
     std::vector<Figures> before(this->Spans);
@@ -247,15 +250,19 @@ public:
         for (int offset = 0; offset <= 2 * RefineReach && failing[f]; ++offset)
         {
           const int j = this->span(f + (offset % 2 ? -1 : 1) * ((offset + 1) / 2));
-          for (const int level : j < 0 ? std::vector<int>{} : this->refinedLevels(keptLevels[j]))
+          if (j < 0)
+          {
+            continue;
+          }
+          std::vector<char> marked(this->Spans, 0);
+          marked[j] = 1;
+          const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
+          for (const int level : this->refinedLevels(keptLevels[j]))
           {
             if (trials-- <= 0)
             {
               break;
             }
-            std::vector<char> marked(this->Spans, 0);
-            marked[j] = 1;
-            const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
             this->Levels = keptLevels;
             this->Levels[j] = level;
             try
