@@ -265,6 +265,12 @@ std::pair<int, double> DataInterval(
   const auto after = std::upper_bound(knots.begin() + 1, knots.end() - 1, t);
   const int interval = static_cast<int>(after - knots.begin()) - 1;
   const double width = knots[interval + 1] - knots[interval];
+  // Corrected parameters can tie (points projecting onto one place, the
+  // curve's end among them): no width to interpolate over, the nearer point.
+  if (!(width > 0.0))
+  {
+    return { interval, t < knots[interval] ? 0.0 : 1.0 };
+  }
   return { interval, std::clamp((t - knots[interval]) / width, 0.0, 1.0) };
 }
 

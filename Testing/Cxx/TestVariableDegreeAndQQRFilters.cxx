@@ -251,6 +251,55 @@ TEST(ApproximatingFilters, TheAortaCenterlineAtTheDefaults)
   }
 }
 
+TEST(ApproximatingFilters, CarriedArraysStayFiniteWhereCorrectedParametersTie)
+{
+  // Scattered points (random 3D clouds and walks, 8 to 59 of them): the
+  // corrected parameters of the points past a fit's end all project onto
+  // its end and tie. The input's arrays on the samples are interpolated
+  // between the data points around each sample's parameter; across a tie
+  // there is nothing to interpolate over (before: NaN at the last sample of
+  // 1 of these 40 lines with the quintic, 4 with the variable degree spline).
+  std::mt19937 random(11);
+  std::normal_distribution<double> normal;
+  std::uniform_int_distribution<int> count(8, 59);
+  std::vector<Polyline> lines;
+  for (int line = 0; line < 40; ++line)
+  {
+    Polyline points(count(random));
+    Point walk{ 0.0, 0.0, 0.0 };
+    for (Point& p : points)
+    {
+      const Point step{ normal(random), normal(random), normal(random) };
+      walk = walk + step;
+      p = line % 2 == 0 ? step : walk;
+    }
+    lines.push_back(points);
+  }
+  const auto data = PolylinesData(lines);
+  vtkNew<vtkDoubleArray> constant;
+  constant->SetName("Constant");
+  constant->SetNumberOfTuples(data->GetNumberOfPoints());
+  constant->Fill(7.0);
+  data->GetPointData()->AddArray(constant);
+  const std::vector<std::pair<std::string, FilterRun>> runs = {
+    { "quintic", RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); }) },
+    { "variable degree, local", RunFilter<VariableDegree>(data,
+      [](VariableDegree* f) { f->SetModeToApproximateLocal(); }) },
+    { "variable degree, global", RunFilter<VariableDegree>(data,
+      [](VariableDegree* f) { f->SetModeToApproximateGlobal(); }) } };
+  for (const auto& [name, run] : runs)
+  {
+    vtkDataArray* carried = PointArray(run.Output, "Constant");
+    ASSERT_NE(carried, nullptr) << name;
+    int off = 0;
+    for (vtkIdType i = 0; i < carried->GetNumberOfTuples(); ++i)
+    {
+      off += !(std::abs(carried->GetTuple1(i) - 7.0) < 1e-12);
+    }
+    EXPECT_EQ(off, 0) << name << ": samples whose carried value is not the input's 7";
+  }
+}
+
 TEST(ApproximatingFilters, TheAutomaticModeNeverKinksTheCurve)
 {
   // The aorta approximated with 26 to 39 knots, each family's automatic
