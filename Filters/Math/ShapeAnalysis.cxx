@@ -123,7 +123,13 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
       shape.Collinear[i] = 0;
       continue;
     }
-    const int opposite = shape.Binormal[i].dot(shape.Binormal[b]) < 0 ? b : a;
+    // The neighbour turning most against it (in 3D a point can turn partly
+    // with both, or against both): chosen by angle, whatever the data's order.
+    auto cosine = [&](int k) {
+      const double norms = shape.Binormal[i].norm() * shape.Binormal[k].norm();
+      return norms > 0.0 ? shape.Binormal[i].dot(shape.Binormal[k]) / norms : 0.0;
+    };
+    const int opposite = cosine(b) < cosine(a) ? b : a;
     if (convex[i] && 2.0 * shape.Curvature[i] < shape.Curvature[opposite])
     {
       shape.Convex[i] = 0;
