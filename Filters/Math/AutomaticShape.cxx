@@ -242,18 +242,14 @@ public:
     for (int pass = 0; pass < RefinePasses && violations > 0; ++pass)
     {
       restoreOutside({});
-      const std::vector<char> failing = failingSpans(this->Auditor.result());
+      const std::vector<int> order = this->refineOrder(this->Auditor.result());
       const int violationsBefore = violations;
-      for (int f = 0; f < this->Spans && violations > 0 && trials > 0; ++f)
+      for (size_t t = 0; t < order.size() && violations > 0 && trials > 0; ++t)
       {
-        reportProgress(this->Context.Options.Progress, f, 64, static_cast<double>(f) / this->Spans);
-        for (int offset = 0; offset <= 2 * RefineReach && failing[f]; ++offset)
+        reportProgress(this->Context.Options.Progress, static_cast<int>(t), 64,
+          static_cast<double>(t) / order.size());
         {
-          const int j = this->span(f + (offset % 2 ? -1 : 1) * ((offset + 1) / 2));
-          if (j < 0)
-          {
-            continue;
-          }
+          const int j = order[t];
           std::vector<char> marked(this->Spans, 0);
           marked[j] = 1;
           const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
@@ -503,6 +499,57 @@ private:
       }
     }
     return false;
+  }
+
+  /**
+   * The spans refine() tries in a pass, in an order that does not depend on
+   * the direction of the line (each trial kept changes what the next one
+   * meets): the failing spans worst first (SpanDeficiency, then the longer
+   * segment of the reference), each followed by its neighbours up to
+   * RefineReach away, nearest first, the worse (or longer) of a pair first.
+   */
+  std::vector<int> refineOrder(const ShapeAudit& audit) const
+  {
+    auto first = [&](int a, int b) {
+      const double deficiencyA = audit.SpanDeficiency[a], deficiencyB = audit.SpanDeficiency[b];
+      if (deficiencyA != deficiencyB)
+      {
+        return deficiencyA > deficiencyB;
+      }
+      const double lengthA = this->Reference.segment(a).norm();
+      const double lengthB = this->Reference.segment(b).norm();
+      return lengthA != lengthB ? lengthA > lengthB : a < b;
+    };
+    std::vector<int> failing;
+    for (int j = 0; j < this->Spans; ++j)
+    {
+      if (audit.SpanMask[j] != 0)
+      {
+        failing.push_back(j);
+      }
+    }
+    std::sort(failing.begin(), failing.end(), first);
+    std::vector<int> order;
+    for (const int f : failing)
+    {
+      order.push_back(f);
+      for (int distance = 1; distance <= RefineReach; ++distance)
+      {
+        int before = this->span(f - distance), after = this->span(f + distance);
+        if (before >= 0 && after >= 0 && first(after, before))
+        {
+          std::swap(before, after);
+        }
+        for (const int j : { before, after })
+        {
+          if (j >= 0)
+          {
+            order.push_back(j);
+          }
+        }
+      }
+    }
+    return order;
   }
 
   /**
