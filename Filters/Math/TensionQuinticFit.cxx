@@ -2,9 +2,11 @@
 
 #include "Approximation.h"
 #include "AutomaticShape.h"
+#include "SparseSolve.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace shapesplines
 {
@@ -37,6 +39,29 @@ QuinticParameters loweredParameters(
   return parameters;
 }
 
+/**
+ * make()'s curve of the ladder's levels. A lowered gamma can leave the
+ * abscissae X(t) not increasing on very uneven knots (refused with
+ * std::domain_error): no curve at those levels, which the automatic search
+ * takes as it takes a singular system; level 0 is refused as the fixed mode is.
+ */
+template <class Make>
+std::unique_ptr<Curve> builtAt(const std::vector<int>& levels, const Make& make)
+{
+  try
+  {
+    return make();
+  }
+  catch (const std::domain_error&)
+  {
+    if (std::any_of(levels.begin(), levels.end(), [](int level) { return level != 0; }))
+    {
+      throw SingularSystem();
+    }
+    throw;
+  }
+}
+
 ShapeLadder quinticLadder(const QuinticFitOptions& quintic)
 {
   ShapeLadder ladder;
@@ -51,9 +76,11 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
   const CleanPolyline& data = context.Data;
   ShapeLadder ladder = quinticLadder(quintic);
   ladder.RetryFromCommonLevel = true;
-  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-    return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(
-      data.Points, context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed));
+  ladder.Build = [&](const std::vector<int>& levels) {
+    return builtAt(levels, [&] {
+      return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(
+        data.Points, context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed));
+    });
   };
   return fixedOrAutomatic(quintic.Automatic, context, data, ladder);
 }
@@ -69,15 +96,17 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
   ShapeLadder ladder = quinticLadder(quintic);
   ladder.ReferenceNoise = reference.VertexNoise;
   ladder.Bounds.CurvatureChange = 2.0; // keeping L*'s shape must not flatten the fit
-  ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
-    const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
-    auto whole = std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::approximate(
-      data.Points, data.Parameters, data.Knots, loweredParameters(quintic, all, closed), closed));
-    if (data.Extra == 0)
-    {
-      return whole;
-    }
-    return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
+  ladder.Build = [&](const std::vector<int>& levels) {
+    return builtAt(levels, [&]() -> std::unique_ptr<Curve> {
+      const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
+      auto whole = std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::approximate(
+        data.Points, data.Parameters, data.Knots, loweredParameters(quintic, all, closed), closed));
+      if (data.Extra == 0)
+      {
+        return whole;
+      }
+      return std::make_unique<TrimmedCurve>(std::move(whole), data.Extra, spans);
+    });
   };
   BuiltCurve built = fixedOrAutomatic(quintic.Automatic, context, reference.Polygon, ladder);
   QuinticApproximation result;

@@ -201,6 +201,27 @@ inline std::vector<Vec3> unevenNoisyHelixPoints(int count, double noise, unsigne
   return withNoise(randomlySpacedHelix(count, 0.25, seed), noise, seed + 1000);
 }
 
+/// count exact points along three turns of the helix a = 1, b = 0.2 with
+/// heavy-tailed gaps (cubes of exponential variates): from 1e-11 of a turn
+/// to two turns.
+inline std::vector<Vec3> heavyTailedHelixPoints(int count, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::exponential_distribution<double> gap;
+  std::vector<double> t(count, 0.0);
+  for (int i = 1; i < count; ++i)
+  {
+    t[i] = t[i - 1] + std::pow(gap(random), 3.0);
+  }
+  std::vector<Vec3> points;
+  for (const double s : t)
+  {
+    const double angle = 6.0 * Pi * s / t.back();
+    points.emplace_back(std::cos(angle), std::sin(angle), 0.2 * angle);
+  }
+  return points;
+}
+
 /// count points of one period of the trefoil knot (an open line: the period
 /// is not closed), with noise of a fraction of its size 3.
 inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned seed)
@@ -301,6 +322,8 @@ struct BoundFigures
   double Curvature = 0.0;
   /// Lowest |s'| (64 samples a span) over the span's chord speed.
   double Speed = 1.0;
+  /// Farthest a span strays from its segment of the reference (ShapeAudit::PolygonDeviation).
+  double Deviation = 0.0;
   bool StraightRuns = false;
 };
 
@@ -314,6 +337,7 @@ inline BoundFigures boundFigures(const FittedPolyline& fit)
   }
   const double turn = *std::max_element(fit.Shape.Curvature.begin(), fit.Shape.Curvature.end());
   figures.Curvature = largest / std::max(turn, 1e-300);
+  figures.Deviation = fit.Audit.PolygonDeviation;
   figures.StraightRuns =
     std::any_of(fit.Shape.Collinear.begin(), fit.Shape.Collinear.end(), [](char c) { return c; });
   const Curve& curve = *fit.Spline;
@@ -335,14 +359,18 @@ inline BoundFigures boundFigures(const FittedPolyline& fit)
 /// Whether a fit keeps the automatic modes' bounds: no degenerate curve.
 inline bool withinBounds(const BoundFigures& figures)
 {
-  return figures.Curvature <= (figures.StraightRuns ? 1e4 : 1e3) && figures.Speed >= 1e-3;
+  return figures.Curvature <= (figures.StraightRuns ? 1e4 : 1e3) && figures.Speed >= 1e-3 &&
+    figures.Deviation <= MaximumPolygonDeviation;
 }
 
-/// An automatic curve's figures within the bounds, or no worse than its fixed curve's.
+/// Each of an automatic curve's figures within its bound, or no worse than
+/// its fixed curve's (as the automatic modes judge them, one by one).
 inline bool withinBoundsOrNoWorse(const BoundFigures& automatic, const BoundFigures& fixed)
 {
-  return withinBounds(automatic) ||
-    (automatic.Curvature <= fixed.Curvature && automatic.Speed >= fixed.Speed);
+  const double curvatureBound = automatic.StraightRuns ? 1e4 : 1e3;
+  return (automatic.Curvature <= curvatureBound || automatic.Curvature <= fixed.Curvature) &&
+    (automatic.Speed >= 1e-3 || automatic.Speed >= fixed.Speed) &&
+    (automatic.Deviation <= MaximumPolygonDeviation || automatic.Deviation <= fixed.Deviation);
 }
 } // namespace shapesplines::test
 
