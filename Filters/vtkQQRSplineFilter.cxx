@@ -71,8 +71,13 @@ shapesplines::BuiltCurve vtkQQRSplineFilter::BuildCurve(
   options.MaxAlpha = std::max({ this->MaxAlpha, this->Alpha, this->Beta });
   if (this->LocalParameters == CUSTOM)
   {
-    options.X = this->X;
-    options.Y = this->Y;
+    // X and Y shape the control polygon's curve; an interpolation keeps its
+    // own (applied to it, X = 1 swung a 20-point helix out to 6e6 times its size).
+    if (this->Mode == APPROXIMATE)
+    {
+      options.X = this->X;
+      options.Y = this->Y;
+    }
     options.Z = this->Z;
   }
   if (this->Continuity == C2_FC && this->Mode == APPROXIMATE)

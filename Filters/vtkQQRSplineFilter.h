@@ -132,8 +132,10 @@ public:
   /**
    * PAPER (default): the local parameters given before the paper's Figure 5
    * (the classical cubic B-spline at alpha = beta = 4); CUSTOM: X, Y, Z at
-   * every knot, each in [0, 1] (NaN is refused when the filter runs). The
-   * interpolation takes x and y from (3.18) and uses Z only.
+   * every knot, each in [0, 1] (NaN is refused when the filter runs). X and
+   * Y shape the control polygon's curve (APPROXIMATE); the interpolations
+   * use Z only (LOCAL_INTERPOLATION takes x and y from (3.18), INTERPOLATE
+   * keeps the paper's).
    */
   vtkSetClampMacro(LocalParameters, int, PAPER, CUSTOM);
   vtkGetMacro(LocalParameters, int);
