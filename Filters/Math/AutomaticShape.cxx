@@ -248,39 +248,37 @@ public:
       {
         reportProgress(this->Context.Options.Progress, static_cast<int>(t), 64,
           static_cast<double>(t) / order.size());
+        const int j = order[t];
+        std::vector<char> marked(this->Spans, 0);
+        marked[j] = 1;
+        const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
+        for (const int level : this->refinedLevels(keptLevels[j]))
         {
-          const int j = order[t];
-          std::vector<char> marked(this->Spans, 0);
-          marked[j] = 1;
-          const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
-          for (const int level : this->refinedLevels(keptLevels[j]))
+          if (trials-- <= 0)
           {
-            if (trials-- <= 0)
-            {
-              break;
-            }
-            this->Levels = keptLevels;
-            this->Levels[j] = level;
-            try
-            {
-              this->rebuild(moved);
-            }
-            catch (const SingularSystem&)
-            {
-              continue; // not a curve: the kept one stays
-            }
-            restoreOutside(moved);
-            const int now = this->Auditor.result().violations();
-            if (now < violations && withinBounds(moved))
-            {
-              violations = now;
-              keptLevels = this->Levels;
-              kept = std::move(this->Curve);
-            }
-            else
-            {
-              rejected = moved;
-            }
+            break;
+          }
+          this->Levels = keptLevels;
+          this->Levels[j] = level;
+          try
+          {
+            this->rebuild(moved);
+          }
+          catch (const SingularSystem&)
+          {
+            continue; // not a curve: the kept one stays
+          }
+          restoreOutside(moved);
+          const int now = this->Auditor.result().violations();
+          if (now < violations && withinBounds(moved))
+          {
+            violations = now;
+            keptLevels = this->Levels;
+            kept = std::move(this->Curve);
+          }
+          else
+          {
+            rejected = moved;
           }
         }
       }
