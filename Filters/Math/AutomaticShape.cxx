@@ -199,8 +199,8 @@ public:
 
   /**
    * Where the searches left violations: each span near one left failing
-   * (nearest first, RefineReach on each side) tried alone at a few other
-   * levels (refinedLevels), the curve rebuilt and audited around it, the
+   * (RefineReach on each side, in refineOrder's order) tried alone at a few
+   * other levels (refinedLevels), the curve rebuilt and audited around it, the
    * change kept where it lowers the violations within the bounds; twice
    * over, at most `trials` builds. The curve audited whole if it has fewer
    * violations than found, none otherwise.
@@ -561,14 +561,7 @@ private:
       const double lengthB = this->Reference.segment(b).norm();
       return lengthA != lengthB ? lengthA > lengthB : a < b;
     };
-    std::vector<int> failing;
-    for (int j = 0; j < this->Spans; ++j)
-    {
-      if (audit.SpanMask[j] != 0)
-      {
-        failing.push_back(j);
-      }
-    }
+    std::vector<int> failing = this->around(failingSpans(audit), 0);
     std::sort(failing.begin(), failing.end(), first);
     std::vector<int> order;
     for (const int f : failing)

@@ -143,16 +143,18 @@ struct AutomaticShape
  * second search, ShapeLadder::RetrySpanBySpan, or a third,
  * ShapeLadder::RetryFromCommonLevel, if it has fewer; both only within
  * RetryReach of the spans left failing). Where violations are left, refines
- * (ShapeLadder::Refine): each span within RefineReach of one left failing,
- * nearest first, is tried alone at levels 0 and 1 and at a quarter, half
- * and all of the top, rebuilt and audited around it, and the change kept
- * where it lowers the violations within the bounds; the refined curve,
- * audited whole, is kept if it has fewer. The searches raise a neighbourhood
- * together, overshoot, and freeze a span whose raise stalls: on 100 random
- * 3D polylines of 60 points refining takes the generalized cubic from 17
- * violations left to 5, the variable degree spline from 7 to 0, the quintic
- * from 84 to 40 and qqr from 94 to 34, mostly by lowering a span to level
- * 0 or 1 (or flattening one more of qqr's knots).
+ * (ShapeLadder::Refine): each span within RefineReach of one left failing
+ * (the worst failing first, each followed by its neighbours nearest first:
+ * an order the line's direction does not change) is tried alone at levels
+ * 0 and 1 and at a quarter, half and all of the top, rebuilt and audited
+ * around it, and the change kept where it lowers the violations within the
+ * bounds; the refined curve, audited whole, is kept if it has fewer. The
+ * searches raise a neighbourhood together, overshoot, and freeze a span
+ * whose raise stalls: on 100 random 3D polylines of 60 points refining
+ * takes the generalized cubic from 17 violations left to 5, the variable
+ * degree spline from 7 to 0, the quintic from 84 to 42 and qqr from 94 to
+ * 32, mostly by lowering a span to level 0 or 1 (or flattening one more of
+ * qqr's knots).
  * Progress is reported each round (it can abort).
  */
 AutomaticShape preserveShapeAutomatically(
