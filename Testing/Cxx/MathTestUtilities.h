@@ -318,7 +318,9 @@ inline std::vector<UsersData> usersData()
 /// What the automatic modes bound (ShapeBounds), measured on a fit.
 struct BoundFigures
 {
-  /// Largest curvature on the samples over the reference polygon's largest discrete curvature.
+  /// Largest curvature on the samples, or between them where the automatic
+  /// modes' audit finds a peak (FitOptions' defaults), over the reference
+  /// polygon's largest discrete curvature.
   double Curvature = 0.0;
   /// Lowest |s'| (64 samples a span) over the span's chord speed.
   double Speed = 1.0;
@@ -336,11 +338,24 @@ inline BoundFigures boundFigures(const FittedPolyline& fit)
     largest = std::max(largest, frame.Curvature * fit.Scale); // normalised, as the shape
   }
   const double turn = *std::max_element(fit.Shape.Curvature.begin(), fit.Shape.Curvature.end());
-  figures.Curvature = largest / std::max(turn, 1e-300);
   figures.Deviation = fit.Audit.PolygonDeviation;
   figures.StraightRuns =
     std::any_of(fit.Shape.Collinear.begin(), fit.Shape.Collinear.end(), [](char c) { return c; });
   const Curve& curve = *fit.Spline;
+  // A fixed curve's spike between the output's samples counts as the automatic curve's does.
+  const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
+  if (reference.numberOfSpans() == curve.numberOfSpans())
+  {
+    const FitOptions defaults;
+    CurveAuditor auditor(reference, fit.Shape, defaults.Tolerances, defaults.AuditSubdivisions,
+      fit.CoordinateNoise, AuditFigures::Bounds);
+    for (int j = 0; j < curve.numberOfSpans(); ++j)
+    {
+      auditor.audit(curve, j);
+      largest = std::max(largest, auditor.largestCurvature(j));
+    }
+  }
+  figures.Curvature = largest / std::max(turn, 1e-300);
   const auto& knots = curve.knots();
   for (int j = 0; j < curve.numberOfSpans(); ++j)
   {

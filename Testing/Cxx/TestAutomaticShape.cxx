@@ -639,13 +639,16 @@ TEST(AutomaticShape, RefiningMendsWhatTheSearchesLeaveOnRandomPolylines)
   // the searches raise a neighbourhood together, overshoot, and freeze a
   // span whose raise stalls. Refining their curves (each span near one left
   // failing tried alone at other levels) leaves, of the 100 lines below,
-  // 5 violations for the generalized cubic, 0 for the variable degree
-  // spline, 42 for the quintic and 32 for qqr (40 and 34 while refining went
-  // by index); the searches alone left 17, 7, 84 and 94. Within the bounds,
-  // never more than the fixed parameters'.
+  // 7 violations for the generalized cubic, 9 for the variable degree
+  // spline, 56 for the quintic and 34 for qqr; the searches alone left 17,
+  // 7, 84 and 94. Within the bounds, never more than the fixed parameters'.
+  // Before the audit found the curvature peaks next to knots (boundary
+  // layers, near-cusps between a knot's sample and its neighbour) it left
+  // 5, 0, 42 and 32, with 15, 46, 40 and 3 of these curves beyond the
+  // curvature bound at 2000 samples a span (up to 1.8e5 times the data's).
   const std::vector<Family> all = families();
-  const std::map<std::string, int> most = { { "generalized cubic", 8 },
-    { "variable degree", 2 }, { "tension quintic", 60 }, { "qqr", 55 } };
+  const std::map<std::string, int> most = { { "generalized cubic", 10 },
+    { "variable degree", 12 }, { "tension quintic", 70 }, { "qqr", 45 } };
   for (const Family& family : all)
   {
     int fixedTotal = 0, automaticTotal = 0;
@@ -721,6 +724,61 @@ TEST(AutomaticShape, QQRsStraighteningStartsFromTheFlattenedCurveToo)
   EXPECT_GE(bothMoves, 3);
 }
 
+/// The largest curvature of a fit's curve at many samples a span, over the
+/// reference polygon's largest discrete curvature: what no probe of the audit chooses.
+double denselySampledCurvature(const FittedPolyline& fit, int samplesPerSpan)
+{
+  const Curve& curve = *fit.Spline;
+  const auto& knots = curve.knots();
+  double largest = 0.0;
+  for (int j = 0; j < curve.numberOfSpans(); ++j)
+  {
+    const double h = knots[j + 1] - knots[j];
+    for (int k = 0; k <= samplesPerSpan; ++k)
+    {
+      const Derivatives d = curve.evaluateOnSpan(j, knots[j] + h * k / samplesPerSpan, 2);
+      largest = std::max(largest, curvature(d[1], d[2]));
+    }
+  }
+  return largest / *std::max_element(fit.Shape.Curvature.begin(), fit.Shape.Curvature.end());
+}
+
+TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurvatureBoundBetweenItsSamples)
+{
+  // The bound holds on the curve, not on the audit's 16 samples a span: a
+  // tension's boundary layer at a knot (a generalized cubic span at tension
+  // 256 peaked at 4.5e4 times the data's within 0.25% of its knot, 12.8 at
+  // its samples) or a near-cusp between a knot's sample and its neighbour
+  // (a variable degree span at degree 35: 1.7e4, 630 at its samples). Before
+  // the audit looked there, 5, 12, 8 and 0 of these random polylines and
+  // unevenly spaced noisy helices were beyond the bound at 1024 samples a
+  // span (generalized cubic, variable degree, quintic, qqr; up to 1.1e5
+  // times the data's). Each is within it, or no worse than its fixed curve there.
+  for (const Family& family : families())
+  {
+    int beyond = 0;
+    double largest = 0.0;
+    for (unsigned seed = 0; seed < 40; ++seed)
+    {
+      const std::vector<Vec3> points =
+        seed < 20 ? randomWalk(60, seed) : unevenNoisyHelixPoints(50, 0.01, seed + 60);
+      const FittedPolyline fixed = fitPolyline(points, FitOptions{}, family.Fixed);
+      const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
+      constexpr int SamplesPerSpan = 1024;
+      const double curvature = denselySampledCurvature(automatic, SamplesPerSpan);
+      const bool straightRuns = boundFigures(automatic).StraightRuns;
+      const bool within = curvature <= (straightRuns ? 1e4 : 1e3) ||
+        curvature <= denselySampledCurvature(fixed, SamplesPerSpan);
+      beyond += !within;
+      largest = std::max(largest, curvature);
+      EXPECT_TRUE(within) << family.Name << ", seed " << seed << ": " << curvature;
+    }
+    std::printf("%s: %d of 40 curves beyond the curvature bound at 1024 samples a span, largest "
+                "%.3g times the data's\n",
+      family.Name, beyond, largest);
+  }
+}
+
 TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpacedPoints)
 {
   // Noisy points at random places along a helix: close pairs next to long
@@ -756,8 +814,11 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
     std::printf("%s, 180 unevenly spaced noisy helices: %d violations fixed, %d automatic, largest "
                 "curvature over the data's %.3g\n",
       family.Name, fixedTotal, automaticTotal, largest);
-    // What each family leaves at most (measured 0.04%, 0%, 1.6%, 5.3%; 1.9%
-    // and 6.0% before settling reached far levels and refining went worst first;
+    // What each family leaves at most (measured 0.20%, 0.62%, 1.9%, 5.3%;
+    // 0.04%, 0%, 1.6%, 5.3% while the audit missed the curvature peaks next
+    // to knots, with 8, 15, 23 and 5 curves beyond the curvature bound at
+    // 2000 samples a span, up to 2.6e5 times the data's; 1.9% and 6.0% before
+    // settling reached far levels and refining went worst first;
     // before the searches' curves were refined 0.04%, 0.09%, 3.2%, 10.7%, the
     // quintic 18% before its search from a common level, qqr 12.7% before
     // it straightened from the flattened curve too).
@@ -879,9 +940,10 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       }
     }
   }
-  // What each family leaves at most (measured 0.19%, 0.87%, 2.4%, 13%).
+  // What each family leaves at most (measured 2.0%, 3.8%, 4.2%, 5.4%; 0.19%,
+  // 0.87%, 2.4%, 13% while the audit missed the curvature peaks next to knots).
   const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.03 },
-    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 0.2 } };
+    { "variable degree", 0.05 }, { "tension quintic", 0.15 }, { "qqr", 0.2 } };
   for (const Family& family : families())
   {
     int fixedTotal = 0, automaticTotal = 0;
