@@ -75,12 +75,14 @@ double goldenSectionMinimum(const F& f, double lo, double hi)
 /**
  * The curvature and speed |s'| at the bottom of span j's deepest speed dip,
  * {0, infinity} without one: a sample slower than its neighbours (a knot
- * sample: than its one neighbour) and than half the span's fastest, refined
- * by golden section between its neighbours. A near-cusp's curvature spike
- * can fall between samples, the dip in speed around it is wider; next to a
- * knot it can lie between the knot's sample and its neighbour (a variable
- * degree span at degree 35 slowed to 4% of its speed at 97% of it, where
- * its curvature peaked at 1.7e4 times the data's, 630 at its samples).
+ * sample: than its one neighbour) and than 3/4 of the span's fastest,
+ * refined by golden section between its neighbours. A near-cusp's curvature
+ * spike can fall between samples, the dip in speed around it is wider; next
+ * to a knot it can lie between the knot's sample and its neighbour (a
+ * variable degree span at degree 35 slowed to 4% of its speed at 97% of it,
+ * where its curvature peaked at 1.7e4 times the data's, 630 at its samples;
+ * another, on a planar spiral, peaked at 9.8e4 where the sample next to the
+ * dip still ran at half the span's fastest).
  */
 std::pair<double, double> speedDip(
   const Curve& curve, int j, const std::vector<double>& speeds, double start, double h)
@@ -96,7 +98,9 @@ std::pair<double, double> speedDip(
       slowest = k;
     }
   }
-  if (slowest < 0 || speeds[slowest] >= 0.5 * *std::max_element(speeds.begin(), speeds.end()))
+  constexpr double SlowFraction = 0.75;
+  const double fastest = *std::max_element(speeds.begin(), speeds.end());
+  if (slowest < 0 || speeds[slowest] >= SlowFraction * fastest)
   {
     return { 0.0, std::numeric_limits<double>::infinity() };
   }
