@@ -125,12 +125,12 @@ std::pair<double, double> speedDip(
  *   it, where it runs at 5% of its speed; a quintic span's knot sample, at
  *   36, ran faster than its neighbour and the peak, 1.2e4, lay between them.)
  * The interval is probed closer and closer to its ends (down to 2^-14 of
- * it; a layer's from its knot only) and refined by golden section between
- * the neighbours of the highest probe (a layer's only where a probe stands
- * above the knot).
+ * it; a layer's from its knot only, at every other power of two) and
+ * refined by golden section between the neighbours of the highest probe (a
+ * layer's only where a probe stands above the knot).
  */
 double curvatureBetweenSamples(const Curve& curve, int j, const std::vector<Derivatives>& values,
-  const std::vector<FrenetFrame>& frames, const std::vector<double>& speeds, double start, double h)
+  const std::vector<FrenetFrame>& frames, double start, double h)
 {
   auto curvatureAt = [&](double fraction) {
     const Derivatives d = curve.evaluateOnSpan(j, start + h * fraction, 2);
@@ -329,7 +329,7 @@ void CurveAuditor::audit(const Curve& curve, int j)
     return;
   }
   const auto [dipCurvature, dipSpeed] = speedDip(curve, j, speeds, knots[j], h);
-  const double between = curvatureBetweenSamples(curve, j, values, frames, speeds, knots[j], h);
+  const double between = curvatureBetweenSamples(curve, j, values, frames, knots[j], h);
   this->Curvature[j] = std::max({ curvature, dipCurvature, between });
   this->Speed[j] = chordSpeed > 0.0 ? std::min(speed, dipSpeed) / chordSpeed : 1.0;
 }
