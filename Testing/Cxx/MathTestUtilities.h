@@ -379,13 +379,18 @@ inline bool withinBounds(const BoundFigures& figures)
 }
 
 /// Each of an automatic curve's figures within its bound, or no worse than
-/// its fixed curve's (as the automatic modes judge them, one by one).
+/// its fixed curve's (as the automatic modes judge them, one by one), but
+/// for the 5% ripple a global solve moves level-0 spans by, which settling
+/// lets pass after its second rebuild.
 inline bool withinBoundsOrNoWorse(const BoundFigures& automatic, const BoundFigures& fixed)
 {
+  constexpr double Ripple = 0.05;
   const double curvatureBound = automatic.StraightRuns ? 1e4 : 1e3;
-  return (automatic.Curvature <= curvatureBound || automatic.Curvature <= fixed.Curvature) &&
-    (automatic.Speed >= 1e-3 || automatic.Speed >= fixed.Speed) &&
-    (automatic.Deviation <= MaximumPolygonDeviation || automatic.Deviation <= fixed.Deviation);
+  return (automatic.Curvature <= curvatureBound ||
+           automatic.Curvature <= fixed.Curvature * (1.0 + Ripple)) &&
+    (automatic.Speed >= 1e-3 || automatic.Speed >= fixed.Speed * (1.0 - Ripple)) &&
+    (automatic.Deviation <= MaximumPolygonDeviation ||
+      automatic.Deviation <= fixed.Deviation * (1.0 + Ripple));
 }
 } // namespace shapesplines::test
 

@@ -814,8 +814,9 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurveRegularOnUnevenlySpaced
     std::printf("%s, 180 unevenly spaced noisy helices: %d violations fixed, %d automatic, largest "
                 "curvature over the data's %.3g\n",
       family.Name, fixedTotal, automaticTotal, largest);
-    // What each family leaves at most (measured 0.20%, 0.62%, 1.9%, 5.3%;
-    // 0.04%, 0%, 1.6%, 5.3% while the audit missed the curvature peaks next
+    // What each family leaves at most (measured 0.20%, 0.16%, 2.1%, 5.3%;
+    // 0.20%, 0.62%, 1.9%, 5.3% before settling let a global solve's ripple
+    // pass; 0.04%, 0%, 1.6%, 5.3% while the audit missed the curvature peaks next
     // to knots, with 8, 15, 23 and 5 curves beyond the curvature bound at
     // 2000 samples a span, up to 2.6e5 times the data's; 1.9% and 6.0% before
     // settling reached far levels and refining went worst first;
@@ -940,10 +941,11 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnPlanarAndClosedLines)
       }
     }
   }
-  // What each family leaves at most (measured 2.0%, 3.8%, 4.2%, 5.4%; 0.19%,
+  // What each family leaves at most (measured 1.1%, 0.76%, 2.1%, 5.4%; 2.0%,
+  // 3.8%, 4.2%, 5.4% before settling let a global solve's ripple pass; 0.19%,
   // 0.87%, 2.4%, 13% while the audit missed the curvature peaks next to knots).
   const std::map<std::string, double> leftAtMost{ { "generalized cubic", 0.03 },
-    { "variable degree", 0.05 }, { "tension quintic", 0.15 }, { "qqr", 0.2 } };
+    { "variable degree", 0.03 }, { "tension quintic", 0.15 }, { "qqr", 0.2 } };
   for (const Family& family : families())
   {
     int fixedTotal = 0, automaticTotal = 0;
