@@ -329,6 +329,13 @@ struct BoundFigures
   bool StraightRuns = false;
 };
 
+/// Whether the fit's reference has straight runs (the looser curvature bound).
+inline bool hasStraightRuns(const FittedPolyline& fit)
+{
+  return std::any_of(
+    fit.Shape.Collinear.begin(), fit.Shape.Collinear.end(), [](char c) { return c; });
+}
+
 inline BoundFigures boundFigures(const FittedPolyline& fit)
 {
   BoundFigures figures;
@@ -339,8 +346,7 @@ inline BoundFigures boundFigures(const FittedPolyline& fit)
   }
   const double turn = *std::max_element(fit.Shape.Curvature.begin(), fit.Shape.Curvature.end());
   figures.Deviation = fit.Audit.PolygonDeviation;
-  figures.StraightRuns =
-    std::any_of(fit.Shape.Collinear.begin(), fit.Shape.Collinear.end(), [](char c) { return c; });
+  figures.StraightRuns = hasStraightRuns(fit);
   const Curve& curve = *fit.Spline;
   // A fixed curve's spike between the output's samples counts as the automatic curve's does.
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;

@@ -766,8 +766,7 @@ TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheCurvatureBoundBetweenItsSamp
       const FittedPolyline automatic = fitPolyline(points, FitOptions{}, family.Automatic);
       constexpr int SamplesPerSpan = 1024;
       const double curvature = denselySampledCurvature(automatic, SamplesPerSpan);
-      const bool straightRuns = boundFigures(automatic).StraightRuns;
-      const bool within = curvature <= (straightRuns ? 1e4 : 1e3) ||
+      const bool within = curvature <= (hasStraightRuns(automatic) ? 1e4 : 1e3) ||
         curvature <= denselySampledCurvature(fixed, SamplesPerSpan);
       beyond += !within;
       largest = std::max(largest, curvature);
