@@ -783,12 +783,13 @@ TEST(AutomaticShape, EveryFamilysDefaultModeOnDenselySampledNoisyHelices)
   // Helices sampled densely for their noise (25 to 64 points a turn, noise
   // 0.5% and 1% of the radius: a step of 10 to 52 times the noise), where
   // the data's discrete torsion is mostly the noise's and a third of the
-  // fixed curves' spans fail (usersData() samples 16 a turn). The generalized cubic and the variable degree spline remove every
-  // violation (measured: 0 of 1715 to 7408 per family and density on 300
-  // helices each), within the bounds. The quintic and qqr cannot (their
-  // spans do not gather the bend at the knots, see the README): never more
-  // than their fixed curves', within the bounds, and not much more than
-  // measured here: 1.4% (quintic) and 12% (qqr) of the fixed curves' left.
+  // fixed curves' spans fail (usersData() samples 16 a turn). The
+  // generalized cubic and the variable degree spline remove every violation
+  // (measured: 0 left of 905 to 7408 per family and density on 300 helices
+  // each), within the bounds. The quintic and qqr cannot (their spans do
+  // not gather the bend at the knots, see the README): never more than
+  // their fixed curves', within the bounds, and not much more than measured
+  // here: 1.4% (quintic) and 12% (qqr) of the fixed curves' left.
   std::vector<std::vector<Vec3>> lines;
   unsigned seed = 0;
   for (const double perTurn : { 25.0, 40.0, 64.0 })
