@@ -317,7 +317,27 @@ def automatic_cost(lines=4000, timed_lines=1000):
             "%d / %d" % (seconds["fixed violations"], seconds["auto violations"]), 1e3 * slowest))
     print("(cost: automatic seconds / fixed seconds; the slowest line: each of the first %d lines alone, one "
           "thread, filter overhead included)" % timed_lines)
+    automatic_cost_on_dense_noisy_helices()
     automatic_cost_on_long_lines()
+
+
+def automatic_cost_on_dense_noisy_helices(lines=1000):
+    """The same on helices sampled densely for their noise (25 and 40 points a
+    turn, 1% and 0.5% of the radius), where the data's discrete torsion is
+    mostly the noise's and the fixed curves fail on a third of their spans."""
+    print("\nAutomatic against fixed on densely sampled noisy helices, %d lines x 50 points, 2 threads:" % lines)
+    print("%-9s %9s %7s %9s %22s" % ("family", "per turn", "noise", "cost", "violations fixed/auto"))
+    for per_turn, noise in ((25, 0.01), (40, 0.005)):
+        poly = to_polydata(helix_lines(lines, 50, points_per_turn=per_turn, noise=noise, seed=7))
+        for family, proxy, automatic in FAMILIES[1:]:
+            figures = {}
+            for mode, properties in (("fixed", {automatic: 0}), ("auto", {})):
+                figures[mode] = min(fitted(proxy, poly, **properties)[1] for _ in range(2))
+                figures[mode + " violations"] = int(cell_array(fitted(proxy, poly, **properties)[0],
+                                                               "ShapeViolations").sum())
+            print("%-9s %9d %6.1f%% %8.2fx %22s" % (
+                family, per_turn, 100 * noise, figures["auto"] / figures["fixed"],
+                "%d / %d" % (figures["fixed violations"], figures["auto violations"])))
 
 
 def automatic_cost_on_long_lines(sizes=(10000, 100000)):
