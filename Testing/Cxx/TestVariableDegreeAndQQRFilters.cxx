@@ -538,7 +538,7 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
   // straighten two neighbouring spans where the points turn, and leaves some
   // violations within the automatic mode's bounds; the generalized cubic's
   // tension removes them all. The warning names each line and a failing
-  // criterion.
+  // criterion, and the families that gather each bend at its knot.
   const auto data = PolylinesData(NoisyHelices(2, 200, 0.005, 2));
   const FilterRun automatic = RunFilter<QQR>(data);
   vtkDataArray* left = CellArray(automatic.Output, "ShapeViolations");
@@ -548,7 +548,7 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
   ASSERT_GT(left->GetTuple1(0), 0.0);
   ASSERT_GT(left->GetTuple1(1), 0.0);
   EXPECT_EQ(CountMessages(automatic.Warnings, { "2 line(s) keep shape violations", "cell 0", "cell 1",
-              "convexity on span at spans" }),
+              "convexity on span at spans", "the Generalized Cubic Spline and the Variable Degree" }),
     1)
     << Joined(automatic.Warnings);
   const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
