@@ -547,8 +547,9 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
   Measure("two noisy helices, qqr automatic: violations left on line 1", left->GetTuple1(1));
   ASSERT_GT(left->GetTuple1(0), 0.0);
   ASSERT_GT(left->GetTuple1(1), 0.0);
-  EXPECT_EQ(CountMessages(automatic.Warnings, { "2 line(s) keep shape violations", "cell 0", "cell 1",
-              "convexity on span at spans", "the Generalized Cubic Spline and the Variable Degree" }),
+  EXPECT_EQ(CountMessages(automatic.Warnings,
+              { "2 line(s) keep shape violations", "cell 0", "cell 1", "convexity on span at spans",
+                "the Generalized Cubic Spline and the Variable Degree Spline" }),
     1)
     << Joined(automatic.Warnings);
   const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
