@@ -189,6 +189,7 @@ protected:
   }
   const char* GetPointValuesArrayName() override;
   bool AdjustsShape() const override { return this->Automatic; }
+  bool GathersBendsAtKnots() const override { return false; }
 
   int Mode = INTERPOLATE;
   bool Automatic = true;

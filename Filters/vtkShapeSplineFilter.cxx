@@ -627,21 +627,17 @@ void ReportFit(vtkAlgorithm* self, const LineWork& line, bool approximates)
 
 /// One message a run for the lines whose curves are the best met within the
 /// automatic mode's bounds (no cusp, no runaway curvature).
-void ReportShapeViolations(
-  vtkAlgorithm* self, const std::vector<LineWork>& lines, const std::vector<size_t>& violatingLines)
+void ReportShapeViolations(vtkAlgorithm* self, const std::vector<LineWork>& lines,
+  const std::vector<size_t>& violatingLines, bool gathersBends)
 {
   const std::string lineText = DescribeLines(lines, violatingLines,
     [](const LineWork& line) { return DescribeFailures(line.Fit.Audit); });
-  // The generalized cubic's tension and the variable degree spline's degrees
-  // gather each bend at its knot, which the quintic's gamma and qqr's
-  // straightness cannot (densely sampled noisy helices: 0 left where the
-  // quintic keeps 0.7-2.2%, qqr 1.5-19%; staircases: 0 where the quintic
-  // keeps two a corner).
+  // Families that gather each bend at its knot leave fewer (densely sampled
+  // noisy helices: 0 where the quintic keeps 0.7-2.2%, qqr 1.5-19%;
+  // staircases: 0 where the quintic keeps two a corner).
   const bool interpolated = std::all_of(violatingLines.begin(), violatingLines.end(),
     [&](size_t k) { return lines[k].Fit.interpolates(); });
-  const bool gathersNoBend =
-    self->IsA("vtkTensionQuinticSplineFilter") || self->IsA("vtkQQRSplineFilter");
-  const std::string advice = interpolated && gathersNoBend
+  const std::string advice = interpolated && !gathersBends
     ? " To interpolate such points, the Generalized Cubic Spline and the Variable Degree Spline "
       "keep their shape more often."
     : "";
@@ -691,8 +687,8 @@ void ReportReversals(
  * back on themselves and one about the violations left. Returns the lines
  * that go to the output, in input order.
  */
-std::vector<size_t> ReportFits(
-  vtkAlgorithm* self, const std::vector<LineWork>& lines, bool approximates, bool adjustsShape)
+std::vector<size_t> ReportFits(vtkAlgorithm* self, const std::vector<LineWork>& lines,
+  bool approximates, bool adjustsShape, bool gathersBends)
 {
   std::vector<size_t> kept;
   int noisyLines = 0;
@@ -724,7 +720,7 @@ std::vector<size_t> ReportFits(
   ReportReversals(self, lines, kept);
   if (!violatingLines.empty())
   {
-    ReportShapeViolations(self, lines, violatingLines);
+    ReportShapeViolations(self, lines, violatingLines, gathersBends);
   }
   return kept;
 }
@@ -1223,8 +1219,8 @@ int vtkShapeSplineFilter::FitLines(vtkPolyData* input, vtkPolyData* output)
 
   // Messages and where each line's samples go, serially (VTK's messages are not
   // thread-safe); then the arrays are written in parallel, a line per task.
-  const std::vector<size_t> kept =
-    ReportFits(this, lines, this->Approximates(), this->AdjustsShape());
+  const std::vector<size_t> kept = ReportFits(
+    this, lines, this->Approximates(), this->AdjustsShape(), this->GathersBendsAtKnots());
   std::vector<vtkIdType> firstSample = FirstSamples(lines, kept);
   if (!this->WithinSampleBudget(firstSample.back()))
   {

@@ -288,6 +288,12 @@ protected:
   /// (it could not remove them within its bounds) are reported.
   virtual bool AdjustsShape() const { return false; }
 
+  /// Whether the automatic mode's parameter can gather a bend at its knot
+  /// (the generalized cubic's tension, the variable degree spline's degrees):
+  /// where one that cannot (the quintic's gamma, qqr's straightness) leaves
+  /// violations on interpolated lines, the warning points to those that can.
+  virtual bool GathersBendsAtKnots() const { return true; }
+
   /// An approximating family's NumberOfKnots for the math core: 0 is
   /// shapesplines::CrossValidatedKnots, 1 counts as 2.
   static int ApproximationKnotCount(int numberOfKnots);

@@ -138,6 +138,7 @@ protected:
   ~vtkTensionQuinticSplineFilter() override;
   bool Approximates() const override { return this->Mode == APPROXIMATE; }
   bool AdjustsShape() const override { return this->Automatic; }
+  bool GathersBendsAtKnots() const override { return false; }
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
