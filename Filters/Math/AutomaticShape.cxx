@@ -136,8 +136,8 @@ public:
     {
       this->StartCurvatures.push_back(this->Auditor.sampleCurvatures(j));
     }
-    this->Best = this->Levels;
-    this->BestViolations = this->Audit.violations();
+    this->Best = this->StartLevels = this->Levels;
+    this->BestViolations = this->StartViolations = this->Audit.violations();
   }
 
   /**
@@ -159,8 +159,8 @@ public:
     {
       return false;
     }
-    this->Best = this->Levels;
-    this->BestViolations = this->Audit.violations();
+    this->Best = this->StartLevels = this->Levels;
+    this->BestViolations = this->StartViolations = this->Audit.violations();
     return true;
   }
 
@@ -193,6 +193,12 @@ public:
         round = this->searchRounds(round);
         this->keepIfBetterWhole(audited, auditedViolations);
       }
+    }
+    // Misled by its neighbourhoods' audits, a search can end worse than
+    // where it started (a heavy-tailed helix: the quintic 1 -> 5 violations).
+    if (this->StartViolations < this->BestViolations)
+    {
+      this->keepIfBetterWhole(this->StartLevels, this->StartViolations);
     }
     return this->finish(round);
   }
@@ -895,6 +901,9 @@ private:
   int WholeAudits = 0;
   std::vector<int> Best;
   int BestViolations = 0;
+  /// The levels the search started from and their violations, audited whole.
+  std::vector<int> StartLevels;
+  int StartViolations = 0;
   std::vector<std::vector<double>> StartCurvatures; ///< per span, of level 0 (CurvatureChange)
   std::vector<Figures> LevelZero; ///< see levelZeroFigures
 };
