@@ -196,6 +196,9 @@ private:
   /// sample reads them.
   std::vector<Vec3> UnitBinormal;
   std::vector<char> TwistReverses;
+  /// Per span: how far its torsion may fall below zero (scale-free) before
+  /// it counts as the wrong sign: tolerances.Curve, more near a reversal.
+  std::vector<double> TwistTolerance;
   std::vector<std::vector<Finding>> Findings; ///< per span whose samples found them
   /// Per span next to a knot where the data's torsion changes sign: each
   /// inside sample's wrong-sign torsion beyond tolerance (0: right sign), in order.

@@ -236,6 +236,25 @@ inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned se
   return withNoise(points, 3.0 * noise, seed);
 }
 
+/// count exact points of one period of the trefoil knot (open), each moved
+/// along it by up to jitter / 2 of the mean spacing: spacings from 1 - jitter
+/// to 1 + jitter of it, neighbours' ratios up to 40 at jitter 0.95. The
+/// trefoil's torsion changes sign six times a period.
+inline std::vector<Vec3> unevenTrefoilPoints(int count, double jitter, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> shift(-0.5 * jitter, 0.5 * jitter);
+  const double spacing = 0.999 * 2.0 * Pi / (count - 1);
+  std::vector<Vec3> points;
+  for (int i = 0; i < count; ++i)
+  {
+    const double t = spacing * (i + (i > 0 && i < count - 1 ? shift(random) : 0.0));
+    points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t),
+      -std::sin(3.0 * t));
+  }
+  return points;
+}
+
 /// A random 3D polyline: steps of random direction and length 0.5 to 1.5.
 inline std::vector<Vec3> randomWalk(int count, unsigned seed)
 {

@@ -57,10 +57,27 @@ int failuresWithTorsion(const FittedPolyline& fit, const std::function<double(do
   return torsionFailures(fit, [&](double u, double) { return torsion(u); });
 }
 
+/// The torsion's slope of crossingAt: steep next to the discrete torsion's
+/// steps on quarticTwist (about 3 a span), which within two spans of a
+/// reversal the audit allows a wrong sign of half of.
+constexpr double CrossingSlope = 40.0;
+
 /// A torsion that changes sign, from negative to positive, at u = where.
 std::function<double(double)> crossingAt(double where)
 {
-  return [where](double u) { return u - where; };
+  return [where](double u) { return CrossingSlope * (u - where); };
+}
+
+/// The largest step of the discrete torsion between neighbouring segments
+/// among segments first..last.
+double largestTorsionStep(const DiscreteShape& shape, int first, int last)
+{
+  double step = 0.0;
+  for (int k = first + 1; k <= last; ++k)
+  {
+    step = std::max(step, std::abs(shape.Torsion[k] - shape.Torsion[k - 1]));
+  }
+  return step;
 }
 
 /// (t, t^2, t^4) at t = first + 0.25 i, i = 0..8: its torsion
@@ -368,8 +385,28 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceAroundTheKnotWhereTheDataDo)
   EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot - 1.4)), 2);
   EXPECT_EQ(failuresWithTorsion(fit, crossingAt(knot + 1.4)), 2);
   // Right at both ends of the span before the knot, wrong in its middle: three changes.
-  const auto backAndForth = [](double u) { return u > 3.3 && u < 3.5 ? 1.0 : u - knot; };
+  const auto backAndForth = [](double u) {
+    return u > 3.3 && u < 3.5 ? CrossingSlope : CrossingSlope * (u - knot);
+  };
   EXPECT_EQ(failuresWithTorsion(fit, backAndForth), 1);
+}
+
+TEST(ShapeAudit, TorsionWaveringAboutItsZeroIsNoSignChange)
+{
+  // Near the torsion's zero a converging curve's torsion wavers about it by
+  // its error, of the order of the discrete torsion's steps from segment to
+  // segment: within two spans of the knot where the data reverse, a wrong
+  // sign counts beyond half the largest step there, not before.
+  const FittedPolyline fit = fitPolyline(quarticTwist(-1.0), FitOptions{}, cubicBuilder());
+  const int knot = 4;
+  const double step = largestTorsionStep(fit.Shape, knot - 2, knot + 1);
+  ASSERT_GT(step, 0.0);
+  auto wavering = [&](double size) {
+    return [=](double u) { return u > 2.3 && u < 2.7 ? size * step : CrossingSlope * (u - knot); };
+  };
+  EXPECT_EQ(failuresWithTorsion(fit, wavering(0.4)), 0); // wrong, but within its error
+  EXPECT_EQ(failuresWithTorsion(fit, wavering(0.6)), 1); // beyond it: span 2
+  EXPECT_EQ(failuresWithTorsion(fit, wavering(-0.6)), 0); // the right sign
 }
 
 TEST(ShapeAudit, TorsionMayChangeSignWithinASpanOfWhereTheDataPutIt)
