@@ -222,6 +222,13 @@ inline std::vector<Vec3> heavyTailedHelixPoints(int count, unsigned seed)
   return points;
 }
 
+/// The trefoil knot at t (period 2 pi, size about 3).
+inline Vec3 trefoilPoint(double t)
+{
+  return { std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t),
+    -std::sin(3.0 * t) };
+}
+
 /// count points of one period of the trefoil knot (an open line: the period
 /// is not closed), with noise of a fraction of its size 3.
 inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned seed)
@@ -229,9 +236,7 @@ inline std::vector<Vec3> noisyTrefoilPoints(int count, double noise, unsigned se
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i)
   {
-    const double t = 2.0 * Pi * i / count;
-    points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t),
-      -std::sin(3.0 * t));
+    points.push_back(trefoilPoint(2.0 * Pi * i / count));
   }
   return withNoise(points, 3.0 * noise, seed);
 }
@@ -248,9 +253,7 @@ inline std::vector<Vec3> unevenTrefoilPoints(int count, double jitter, unsigned 
   std::vector<Vec3> points;
   for (int i = 0; i < count; ++i)
   {
-    const double t = spacing * (i + (i > 0 && i < count - 1 ? shift(random) : 0.0));
-    points.emplace_back(std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t),
-      -std::sin(3.0 * t));
+    points.push_back(trefoilPoint(spacing * (i + (i > 0 && i < count - 1 ? shift(random) : 0.0))));
   }
   return points;
 }

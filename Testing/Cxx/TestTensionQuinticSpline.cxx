@@ -659,9 +659,7 @@ TEST(TensionQuinticSpline, AutomaticModeOnClosedLines)
   std::vector<Vec3> trefoil;
   for (int i = 0; i < 14; ++i)
   {
-    const double t = 2.0 * test::Pi * i / 14;
-    trefoil.emplace_back(
-      std::sin(t) + 2.0 * std::sin(2.0 * t), std::cos(t) - 2.0 * std::cos(2.0 * t), -std::sin(3.0 * t));
+    trefoil.push_back(test::trefoilPoint(2.0 * test::Pi * i / 14));
   }
   const std::vector<Vec3> rectangle{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0),
     Vec3(3, 1, 0), Vec3(3, 2, 0), Vec3(2, 2, 0), Vec3(0.5, 2, 0), Vec3(0, 1, 0) };
