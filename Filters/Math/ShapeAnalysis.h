@@ -158,7 +158,12 @@ struct ShapeAudit
  * the wrong sign must run from the knot), as (ii.2) lets the curvature change
  * sign on a span whose ends turn opposite ways; likewise at an open line's
  * knot next to an end, whose end span has no discrete torsion to say whether
- * it reverses there. What a sample finds is kept with its span, so that the samples of
+ * it reverses there. Within two spans of a knot where the data's torsion
+ * reverses once (no other change among the five twisted segments on either
+ * side), a torsion of the wrong sign counts only beyond half the largest step
+ * of the discrete torsion between neighbouring segments there: the error of
+ * both the data's torsion and a converging curve's near its zero on uneven
+ * spacing. What a sample finds is kept with its span, so that the samples of
  * one span can be audited again (forget(), then add()) after the curve
  * changed there. The data and shape must outlive the auditor.
  */
