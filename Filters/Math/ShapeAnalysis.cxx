@@ -274,6 +274,7 @@ ShapeAuditor::ShapeAuditor(
   this->TwistTolerance.assign(std::max(spans, 0), tolerances.Curve);
   constexpr int Reach = 2;
   constexpr double StepFraction = 0.5;
+  auto exists = [&](int k) { return data.Closed || (k >= 0 && k < spans); };
   auto twisting = [&](int k) { return shape.Twisted[k] || shape.TorsionCrossing[k]; };
   // Only where the torsion passes through zero once among the five twisted
   // segments on either side, not where noise flips its sign back and forth
@@ -286,9 +287,9 @@ ShapeAuditor::ShapeAuditor(
     for (int k = i - ReversalWindow; k < i + ReversalWindow; ++k)
     {
       const int here = wrapIndex(k, spans);
-      if ((data.Closed || (k >= 0 && k < spans)) && shape.Twisted[here])
+      if (exists(k) && shape.Twisted[here])
       {
-        const int current = shape.Torsion[here] > 0 ? 1 : -1;
+        const int current = static_cast<int>(sign(shape.Torsion[here]));
         changes += last != 0 && current != last;
         last = current;
       }
@@ -304,16 +305,15 @@ ShapeAuditor::ShapeAuditor(
     double step = 0.0;
     for (int k = i - Reach + 1; k < i + Reach; ++k)
     {
-      const bool inside = data.Closed || (k >= 1 && k < spans);
       const int here = wrapIndex(k, spans), before = wrapIndex(k - 1, spans);
-      if (inside && twisting(here) && twisting(before))
+      if (exists(k) && exists(k - 1) && twisting(here) && twisting(before))
       {
         step = std::max(step, std::abs(shape.Torsion[here] - shape.Torsion[before]) * this->Scale);
       }
     }
     for (int k = i - Reach; k < i + Reach; ++k)
     {
-      if (data.Closed || (k >= 0 && k < spans))
+      if (exists(k))
       {
         double& allowed = this->TwistTolerance[wrapIndex(k, spans)];
         allowed = std::max(allowed, StepFraction * step);
