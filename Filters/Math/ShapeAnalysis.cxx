@@ -67,6 +67,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
   // overflow for coordinates of 1e-160 or 1e160.
   std::vector<Vec3> unit(std::max(spans, 0));
   std::vector<double> length(std::max(spans, 0));
+  std::vector<char> straightAt(n, 0); // B_i = 0 within epsilon_1: no plane at point i
   for (int i = 0; i < spans; ++i)
   {
     const Vec3 segment = data.segment(i);
@@ -87,6 +88,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     shape.Curvature[i] = chord > 0 ? 2.0 * shape.Binormal[i].norm() / chord : 0.0;
     const double turn = shape.Binormal[i].norm();
     const bool straight = turn <= tolerances.Data;
+    straightAt[i] = straight;
     // What the vertices' noise can do to the turning sine: both directions turn.
     const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
     const bool significant = turn > NoiseSignificance * noiseTurn;
@@ -114,7 +116,12 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
       continue;
     }
     const int b = (before + n) % n, a = after % n;
-    if (!convex[b] || !convex[a] || shape.Binormal[b].dot(shape.Binormal[a]) >= 0)
+    // Opposite beyond rounding: the corners of a 3D staircase turn in
+    // perpendicular planes, whose binormals' product is 0 or +-1e-17 by orientation.
+    const Vec3& turnBefore = shape.Binormal[b];
+    const Vec3& turnAfter = shape.Binormal[a];
+    if (!convex[b] || !convex[a] ||
+      turnBefore.dot(turnAfter) >= -tolerances.Data * turnBefore.norm() * turnAfter.norm())
     {
       continue;
     }
@@ -139,7 +146,11 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
   {
     const int before = (i - 1 + n) % n;
     const int next = (i + 1) % n;
-    if (!interior(i) || !interior(next))
+    // A segment with no plane at an end (a straight run, a line running
+    // back) gets no coplanarity or torsion criterion: (i) asks the curve to be
+    // straight there, and its triple product is rounding over rounding, 0 on
+    // axis-aligned points and a torsion of any size and sign once rotated.
+    if (!interior(i) || !interior(next) || straightAt[i] || straightAt[next])
     {
       continue;
     }

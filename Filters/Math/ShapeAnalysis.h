@@ -41,7 +41,9 @@ struct DiscreteShape
   /// (a cusp), whatever the family; no criterion applies. Streamlines
   /// oscillating about a critical point and retraced paths have them.
   std::vector<char> Reversal;
-  std::vector<double> Torsion; ///< per segment
+  /// Per segment (0, and neither Coplanar nor Twisted, where an end point is
+  /// straight, B_i = 0: no plane there, the span is (i)'s).
+  std::vector<double> Torsion;
   /// Per segment: criterion (iii) applies (not where TorsionCrossing).
   std::vector<char> Coplanar;
   std::vector<char> Twisted;   ///< per segment: Delta_i != 0, criterion (iv.2) applies

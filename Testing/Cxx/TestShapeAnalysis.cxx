@@ -477,6 +477,54 @@ TEST(ShapeAudit, TorsionMayChangeSignOnceNextToAnOpenEnd)
   EXPECT_EQ(failing([](double u) { return u >= 1.0 && u <= 2.0; }), 1); // all of span 1: no
 }
 
+TEST(DiscreteShape, ASegmentOfAStraightRunHasNoPlaneWhateverItsOrientation)
+{
+  // A 3D staircase: runs of two steps along x, y, z, x, y. Every segment has
+  // a collinear end, where no plane exists: no coplanarity or torsion
+  // criterion, the same on the axis-aligned points (whose triple products
+  // are exactly 0) and on a rotated copy (rounding: it read torsions of
+  // 0.5-2.2 of either sign; through the filter the cubic counted 13
+  // violations on the axis-aligned points and 5 on the rotated ones).
+  std::vector<Vec3> points = { Vec3::Zero() };
+  const double runs[] = { 0.509, 1.226, 1.226, 1.837, 0.9 };
+  for (int k = 0; k < 5; ++k)
+  {
+    for (int step = 0; step < 2; ++step)
+    {
+      points.push_back(points.back() + 0.5 * runs[k] * Vec3::Unit(k % 3));
+    }
+  }
+  const Eigen::Matrix3d rotation = (Eigen::AngleAxisd(1.1, Vec3::UnitZ()) *
+    Eigen::AngleAxisd(-0.7, Vec3::UnitY()) * Eigen::AngleAxisd(0.3, Vec3::UnitX()))
+                                     .toRotationMatrix();
+  std::vector<Vec3> rotated;
+  for (const Vec3& p : points)
+  {
+    rotated.push_back(rotation * p);
+  }
+  const DiscreteShape axis = discreteShape(cleanPolyline(points, false));
+  const DiscreteShape turned = discreteShape(cleanPolyline(rotated, false));
+  // The runs' middle points, between corners in perpendicular planes (not
+  // an inflection, which a product of binormals of +-1e-17 took them for).
+  const std::vector<char> collinear = { 0, 1, 0, 1, 0, 1, 0, 1, 0, 1, 0 };
+  EXPECT_EQ(axis.Collinear, collinear);
+  EXPECT_EQ(turned.Collinear, collinear);
+  for (size_t i = 0; i < axis.Torsion.size(); ++i)
+  {
+    for (const DiscreteShape* shape : { &axis, &turned })
+    {
+      EXPECT_FALSE(shape->Coplanar[i]) << i;
+      EXPECT_FALSE(shape->Twisted[i]) << i;
+      EXPECT_EQ(shape->Torsion[i], 0.0) << i;
+    }
+  }
+  const FittedPolyline fit = fitPolyline(points, FitOptions{}, cubicBuilder());
+  const FittedPolyline fitRotated = fitPolyline(rotated, FitOptions{}, cubicBuilder());
+  EXPECT_EQ(fit.Audit.violations(), fitRotated.Audit.violations());
+  EXPECT_EQ(failures(fit.Audit, ShapeCriterion::Coplanarity), 0);
+  EXPECT_GT(failures(fit.Audit, ShapeCriterion::Collinearity), 0); // the cubic bends the runs
+}
+
 TEST(DiscreteShape, ReversalsAreWhereTheLineRunsStraightBack)
 {
   // A to B and back to A twice: reversals at both; a hairpin that still
