@@ -85,9 +85,14 @@ public:
       std::any_of(this->Shape.Collinear.begin(), this->Shape.Collinear.end(), [](char c) { return c; });
     const double diagonal = boundingBoxDiagonal(reference.Points);
     const ShapeBounds& bounds = ladder.Bounds;
+    // Relative to the data's own turns however slight: with a floor of one
+    // over the diagonal, the quintic bent a line whose points stray 1e-7 of
+    // its length to a radius of a hundredth of it (1.4e5 times the data's
+    // curvature). Only points with no turn at all take that floor.
+    const double fallback = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
     this->CurvatureBound =
       (straightRuns ? bounds.StraightRunCurvatureFactor : bounds.CurvatureFactor) *
-      std::max(largestTurn, diagonal > 0.0 ? 1.0 / diagonal : 1.0);
+      (largestTurn > 0.0 ? largestTurn : fallback);
     if (diagonal > 0.0)
     {
       // Noisy points turn tightly for their size: their factor alone let the

@@ -919,6 +919,40 @@ TEST(AutomaticShape, TorsionZerosOfCleanUnevenlySpacedPointsLeaveTheCurveAlone)
   }
 }
 
+TEST(AutomaticShape, EveryFamilysDefaultModeKeepsTheBoundsOnNearlyStraightNoisyLines)
+{
+  // A straight line of length 10 through 100 points that stray 1e-6 from it
+  // (a measured straight edge): its turns of about 1e-5 are above epsilon_1,
+  // so the audit keeps them. The curvature bound is the data's own; with a
+  // floor of one over the diagonal, the quintic's default bent these lines
+  // to 1.35e4 times the data's curvature (through the filter, another such
+  // line to 1.4e5: a radius of a hundredth of the line).
+  for (const Family& family : families())
+  {
+    double largest = 0.0;
+    for (unsigned seed = 1; seed <= 10; ++seed)
+    {
+      std::mt19937 random(seed);
+      std::normal_distribution<double> noise(0.0, 1e-6);
+      std::vector<Vec3> points;
+      for (int i = 0; i < 100; ++i)
+      {
+        points.push_back(10.0 * i / 99.0 * Vec3(0.48, -0.6, 0.64) +
+          Vec3(noise(random), noise(random), noise(random)));
+      }
+      const BothModes fit = fitBoth(family, points);
+      largest = std::max(largest, fit.AutomaticBounds.Curvature);
+      EXPECT_TRUE(withinBoundsOrNoWorse(fit.AutomaticBounds, fit.FixedBounds))
+        << family.Name << ", seed " << seed << ": curvature / data's "
+        << fit.AutomaticBounds.Curvature << " (fixed " << fit.FixedBounds.Curvature << ")";
+      EXPECT_LE(fit.Automatic.Audit.violations(), fit.Fixed.Audit.violations())
+        << family.Name << ", seed " << seed;
+    }
+    std::printf("%s, nearly straight lines: largest curvature %.3g times the data's\n", family.Name,
+      largest);
+  }
+}
+
 TEST(AutomaticShape, EveryFamilysDefaultModeKeepsItsBoundsOnHeavyTailedSpacing)
 {
   // Exact points with gaps from 1e-11 of a turn to two turns: a level
