@@ -1,6 +1,7 @@
 #include "Parameterization.h"
 
 #include <cmath>
+#include <limits>
 
 namespace shapesplines
 {
@@ -42,6 +43,58 @@ double boundingBoxDiagonal(const std::vector<Vec3>& points)
   return (hi - lo).stableNorm(); // no overflow for coordinates of 1e160
 }
 
+namespace
+{
+/**
+ * Drops a point whose segment to its predecessor is under NearRepeatRatio of
+ * every neighbouring segment (the line's last point stays; its predecessor
+ * goes): a streamline stalling, a coordinate round trip. Such a segment's
+ * direction is noise, and a smooth curve through it turns within it: on a
+ * helix, a point 1e-10 of a segment from its neighbour made the quintic's,
+ * qqr's and the variable degree spline's curvature 1e5 times the helix's
+ * (1e-8: 80-300 times, still within the automatic modes' bounds).
+ */
+void mergeNearRepeats(CleanPolyline& line)
+{
+  constexpr double NearRepeatRatio = 1e-8;
+  const int n = static_cast<int>(line.Points.size());
+  if (n < 3)
+  {
+    return;
+  }
+  auto length = [&](int k) { return (line.Points[k + 1] - line.Points[k]).stableNorm(); };
+  std::vector<char> drop(n, 0);
+  for (int k = 0; k + 1 < n; ++k)
+  {
+    double neighbours = std::numeric_limits<double>::infinity();
+    for (const int other : { k - 1, k + 1 })
+    {
+      if (other >= 0 && other + 1 < n)
+      {
+        neighbours = std::min(neighbours, length(other));
+      }
+    }
+    if (length(k) <= NearRepeatRatio * neighbours)
+    {
+      drop[k + 1 < n - 1 ? k + 1 : k] = 1;
+    }
+  }
+  CleanPolyline kept;
+  for (int k = 0; k < n; ++k)
+  {
+    if (drop[k])
+    {
+      ++line.MergedPoints;
+      continue;
+    }
+    kept.Points.push_back(line.Points[k]);
+    kept.SourceIndex.push_back(line.SourceIndex[k]);
+  }
+  line.Points = std::move(kept.Points);
+  line.SourceIndex = std::move(kept.SourceIndex);
+}
+} // namespace
+
 CleanPolyline cleanPolyline(
   const std::vector<Vec3>& points, bool forceClosed, double relativeTolerance)
 {
@@ -57,6 +110,7 @@ CleanPolyline cleanPolyline(
     line.Points.push_back(points[i]);
     line.SourceIndex.push_back(i);
   }
+  mergeNearRepeats(line);
   const bool seamRepeated =
     line.Points.size() > 1 && (line.Points.back() - line.Points.front()).stableNorm() <= tolerance;
   if (seamRepeated)

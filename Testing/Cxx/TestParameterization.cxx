@@ -28,9 +28,26 @@ TEST(Parameterization, ConsecutiveRepeatsAreMergedAndCounted)
 
 TEST(Parameterization, UnevenSpacingIsNotMerged)
 {
-  // 1e-9 next to 1 is data, not a repeat.
-  const CleanPolyline line = cleanPolyline({ Vec3(0, 0, 0), Vec3(1e-9, 0, 0), Vec3(1, 1, 0) }, false);
+  // 1e-7 next to 1 is data, not a repeat.
+  const CleanPolyline line = cleanPolyline({ Vec3(0, 0, 0), Vec3(1e-7, 0, 0), Vec3(1, 1, 0) }, false);
   EXPECT_EQ(line.Points.size(), 3u);
+}
+
+TEST(Parameterization, NearRepeatsAreMerged)
+{
+  // A segment under 1e-8 of each neighbouring one is a repeat whose
+  // direction is noise: its later point goes, or at the line's end the
+  // earlier one; one as short next to one as short is kept.
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(1, 1, 0), d(2, 1, 0);
+  const Vec3 tiny(0, 0, 1e-9);
+  CleanPolyline line = cleanPolyline({ a, b, b + tiny, c, d }, false);
+  EXPECT_EQ(line.Points.size(), 4u);
+  EXPECT_EQ(line.SourceIndex, std::vector<int>({ 0, 1, 3, 4 }));
+  EXPECT_EQ(line.MergedPoints, 1);
+  line = cleanPolyline({ a, b, c, d - tiny, d }, false);
+  EXPECT_EQ(line.SourceIndex, std::vector<int>({ 0, 1, 2, 4 }));
+  line = cleanPolyline({ a, b, c, c + tiny, c + 2.0 * tiny, d }, false);
+  EXPECT_EQ(line.Points.size(), 6u);
 }
 
 TEST(Parameterization, RepeatedSeamClosesTheLine)
