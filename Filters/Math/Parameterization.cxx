@@ -1,5 +1,6 @@
 #include "Parameterization.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -79,7 +80,8 @@ void mergeNearRepeats(CleanPolyline& line)
       drop[k + 1 < n - 1 ? k + 1 : k] = 1;
     }
   }
-  CleanPolyline kept;
+  std::vector<Vec3> points;
+  std::vector<int> sources;
   for (int k = 0; k < n; ++k)
   {
     if (drop[k])
@@ -87,11 +89,11 @@ void mergeNearRepeats(CleanPolyline& line)
       ++line.MergedPoints;
       continue;
     }
-    kept.Points.push_back(line.Points[k]);
-    kept.SourceIndex.push_back(line.SourceIndex[k]);
+    points.push_back(line.Points[k]);
+    sources.push_back(line.SourceIndex[k]);
   }
-  line.Points = std::move(kept.Points);
-  line.SourceIndex = std::move(kept.SourceIndex);
+  line.Points = std::move(points);
+  line.SourceIndex = std::move(sources);
 }
 } // namespace
 

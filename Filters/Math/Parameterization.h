@@ -48,8 +48,9 @@ double boundingBoxDiagonal(const std::vector<Vec3>& points);
 /**
  * Merges points closer than relativeTolerance * bounding-box diagonal to their
  * predecessor, and points whose segment to their predecessor is under 1e-8 of
- * every neighbouring segment (near repeats, whose direction is noise). A line is closed if forceClosed is set or its last point repeats
- * its first; the repeated seam point is dropped.
+ * every neighbouring segment (near repeats, whose direction is noise). A line
+ * is closed if forceClosed is set or its last point repeats its first; the
+ * repeated seam point is dropped.
  */
 CleanPolyline cleanPolyline(
   const std::vector<Vec3>& points, bool forceClosed, double relativeTolerance = 1e-12);
