@@ -33,7 +33,7 @@ Vec3 parabolaDerivative(double t0, double t1, double t2, const Vec3& p0, const V
  */
 Eigen::MatrixX3d solveMoments(const std::vector<Vec3>& points, const std::vector<double>& h,
   bool closed, CubicEndCondition ends, const CubicSpline::EndDerivatives& clamped,
-  double& condition)
+  DeferredCondition& condition)
 {
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(h.size());
@@ -122,7 +122,7 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   auto slope = [&](int i) -> Vec3 { return (y(i + 1) - y(i)) / h[i]; };
 
   Eigen::MatrixX3d moments(n, 3);
-  double condition = 1.0;
+  DeferredCondition condition;
   if (!closed && n == 3 && ends == CubicEndCondition::NotAKnot)
   {
     // One parabola: every moment is its second derivative, set exactly so that
@@ -138,7 +138,7 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   }
 
   CubicSpline spline(knots, closed);
-  spline.ConditionEstimate = condition;
+  spline.Condition = std::move(condition);
   spline.Coefficients.resize(spans);
   for (int i = 0; i < spans; ++i)
   {

@@ -52,7 +52,6 @@ TrimmedCurve::TrimmedCurve(std::unique_ptr<Curve> whole, int first, int spans)
   , Whole(std::move(whole))
   , First(first)
 {
-  this->ConditionEstimate = this->Whole->conditionEstimate();
 }
 
 Derivatives TrimmedCurve::evaluateOnSpan(int span, double t, int order) const
@@ -63,6 +62,11 @@ Derivatives TrimmedCurve::evaluateOnSpan(int span, double t, int order) const
 double TrimmedCurve::arcLengthOnSpan(int span, double a, double b) const
 {
   return this->Whole->arcLengthOnSpan(span + this->First, a, b);
+}
+
+double TrimmedCurve::conditionEstimate() const
+{
+  return this->Whole->conditionEstimate();
 }
 
 std::vector<SpanParameter> TrimmedCurve::spanParameters() const

@@ -2,6 +2,8 @@
 #ifndef shapesplines_Curve_h
 #define shapesplines_Curve_h
 
+#include "SparseSolve.h"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry> // cross products
 
@@ -229,16 +231,16 @@ public:
   virtual std::vector<SpanParameter> spanParameters() const { return {}; }
 
   /// Estimated condition number of the linear systems solved to build the
-  /// curve (their largest; 1 when none was solved): above
-  /// UntrustedCondition (SparseSolve.h) rounding can spoil the curve.
-  double conditionEstimate() const { return ConditionEstimate; }
+  /// curve (their largest; 1 when none was solved), estimated on the first
+  /// call: above UntrustedCondition (SparseSolve.h) rounding can spoil the curve.
+  virtual double conditionEstimate() const { return Condition.value(); }
 
 protected:
   Curve(std::vector<double> knots, bool closed);
 
   std::vector<double> Knots;
   bool Closed = false;
-  double ConditionEstimate = 1.0;
+  DeferredCondition Condition;
 };
 /**
  * The spans first..first + spans - 1 of another open curve, as a curve of
@@ -253,6 +255,7 @@ public:
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
   double arcLengthOnSpan(int span, double a, double b) const override;
   std::vector<SpanParameter> spanParameters() const override;
+  double conditionEstimate() const override;
   /// The curve the spans come from.
   const Curve& whole() const { return *this->Whole; }
 

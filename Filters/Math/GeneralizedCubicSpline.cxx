@@ -335,7 +335,7 @@ GeneralizedCubicSpline GeneralizedCubicSpline::interpolate(const std::vector<Vec
   GeneralizedCubicSpline spline(knots, closed);
   const Eigen::MatrixX3d moments = n == 2 && !closed
     ? Eigen::MatrixX3d(Eigen::MatrixX3d::Zero(n, 3))
-    : solveSparse(n, entries, rhs, &spline.ConditionEstimate);
+    : solveSparse(n, entries, rhs, &spline.Condition);
   spline.Kernels = kernels;
   spline.Coefficients.resize(spans);
   for (int k = 0; k < spans; ++k)

@@ -613,7 +613,7 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
 std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   const std::vector<double>& dh, bool closed, const QQRGeometry& geometry,
   const std::vector<std::array<double, 2>>& exponents, std::array<bool, 2> notAKnot,
-  double* condition)
+  DeferredCondition* condition)
 {
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(dh.size());
@@ -755,7 +755,7 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     const std::array<bool, 2> notAKnot{ !straightened(0, EndReach - 1),
       !straightened(spans - EndReach, spans - 1) };
     control = interpolatingControlPoints(
-      points, dh, closed, geometry, exponents, notAKnot, &spline.ConditionEstimate);
+      points, dh, closed, geometry, exponents, notAKnot, &spline.Condition);
   }
   auto P = [&](int j) -> const Vec3& {
     if (!control.empty())

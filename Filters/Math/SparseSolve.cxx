@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <optional>
 #include <stdexcept>
@@ -294,43 +295,84 @@ std::pair<Triplets, Eigen::MatrixX3d> equilibrateRows(
 } // namespace
 
 Eigen::MatrixX3d solveSparse(
-  int n, const Triplets& rawEntries, const Eigen::MatrixX3d& rawRhs, double* conditionEstimate)
+  int n, const Triplets& rawEntries, const Eigen::MatrixX3d& rawRhs, DeferredCondition* condition)
 {
-  const auto [entries, rhs] = equilibrateRows(n, rawEntries, rawRhs);
+  auto [entries, rhs] = equilibrateRows(n, rawEntries, rawRhs);
+  Eigen::MatrixX3d solution;
   if (const std::optional<BandLU> band = BandLU::factor(n, entries))
   {
     if (band->singular())
     {
       singularSystem();
     }
-    Eigen::MatrixX3d solution = band->solve(rhs);
+    solution = band->solve(rhs);
     if (!solution.allFinite())
     {
       throw std::runtime_error("spline system could not be solved");
     }
-    if (conditionEstimate)
+  }
+  else
+  {
+    Eigen::SparseMatrix<double> matrix(n, n);
+    matrix.setFromTriplets(entries.begin(), entries.end());
+    SparseLU lu;
+    lu.compute(matrix);
+    if (lu.info() != Eigen::Success)
     {
-      *conditionEstimate = conditionOf(*band, n, entries);
+      singularSystem();
     }
-    return solution;
+    solution = lu.solve(rhs);
+    if (lu.info() != Eigen::Success || !solution.allFinite())
+    {
+      throw std::runtime_error("spline system could not be solved");
+    }
   }
-  Eigen::SparseMatrix<double> matrix(n, n);
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  SparseLU lu;
-  lu.compute(matrix);
-  if (lu.info() != Eigen::Success)
+  if (condition)
   {
-    singularSystem();
-  }
-  Eigen::MatrixX3d solution = lu.solve(rhs);
-  if (lu.info() != Eigen::Success || !solution.allFinite())
-  {
-    throw std::runtime_error("spline system could not be solved");
-  }
-  if (conditionEstimate)
-  {
-    *conditionEstimate = conditionOf(GeneralLU(lu), n, entries);
+    condition->record(n, std::move(entries));
   }
   return solution;
+}
+
+void DeferredCondition::record(int n, Triplets entries)
+{
+  this->Pending.push_back({ n, std::move(entries) });
+}
+
+void DeferredCondition::merge(const DeferredCondition& other)
+{
+  this->Pending.insert(this->Pending.end(), other.Pending.begin(), other.Pending.end());
+  this->Largest = std::max(this->Largest, other.Largest);
+}
+
+double DeferredCondition::value() const
+{
+  for (const System& system : this->Pending)
+  {
+    // Factorised again: the solve's factorisation was not kept for it.
+    const int n = system.Unknowns;
+    double estimate = std::numeric_limits<double>::infinity();
+    if (const std::optional<BandLU> band = BandLU::factor(n, system.Entries))
+    {
+      if (!band->singular())
+      {
+        estimate = conditionOf(*band, n, system.Entries);
+      }
+    }
+    else
+    {
+      Eigen::SparseMatrix<double> matrix(n, n);
+      matrix.setFromTriplets(system.Entries.begin(), system.Entries.end());
+      SparseLU lu;
+      lu.compute(matrix);
+      if (lu.info() == Eigen::Success)
+      {
+        estimate = conditionOf(GeneralLU(lu), n, system.Entries);
+      }
+    }
+    this->Largest = std::max(this->Largest, estimate);
+  }
+  this->Pending.clear();
+  return this->Largest;
 }
 } // namespace shapesplines

@@ -24,16 +24,43 @@ public:
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
 /**
+ * The estimated 1-norm condition number of the systems a curve was solved
+ * with (Hager-Higham: a factorisation and a few solves with it and its
+ * transpose, O(n) for a band), computed when first asked for and kept: an
+ * automatic search builds many curves and returns one, and estimating each
+ * cost a third of a tension quintic's build. Until then it holds the
+ * systems' row-scaled entries. Not to be asked from two threads at once.
+ */
+class DeferredCondition
+{
+public:
+  /// The largest estimate over the systems recorded; 1 without any.
+  double value() const;
+  /// Records a system of n unknowns, its entries row-scaled as solveSparse solved it.
+  void record(int n, Triplets entries);
+  /// Records another's systems too (a curve solved in several systems).
+  void merge(const DeferredCondition& other);
+
+private:
+  struct System
+  {
+    int Unknowns;
+    Triplets Entries;
+  };
+  mutable std::vector<System> Pending;
+  mutable double Largest = 1.0;
+};
+
+/**
  * Solves A X = B for a square sparse A given as triplets (duplicates add up)
  * and three right-hand sides, one per coordinate, with A's rows (and B's)
  * scaled to a largest entry of 1 first, so that rows of very different
  * scales keep their accuracy. Banded and cyclic-banded systems cost O(n).
- * Throws SingularSystem if A is singular. With conditionEstimate, also
- * estimates the 1-norm condition number of that row-scaled A (Hager-Higham:
- * a few more solves with it and its transpose, still O(n)).
+ * Throws SingularSystem if A is singular. With condition, records that
+ * row-scaled A there, for its condition number (DeferredCondition).
  */
 Eigen::MatrixX3d solveSparse(int n, const Triplets& entries, const Eigen::MatrixX3d& rhs,
-  double* conditionEstimate = nullptr);
+  DeferredCondition* condition = nullptr);
 
 /**
  * The normal equations B^T W B X = B^T W P of a weighted least-squares fit,
@@ -64,9 +91,9 @@ public:
   }
 
   /// X, one column per coordinate; see solveSparse.
-  Eigen::MatrixX3d solve(double* conditionEstimate = nullptr) const
+  Eigen::MatrixX3d solve(DeferredCondition* condition = nullptr) const
   {
-    return solveSparse(this->Unknowns, this->Entries, this->Rhs, conditionEstimate);
+    return solveSparse(this->Unknowns, this->Entries, this->Rhs, condition);
   }
 
 private:

@@ -446,7 +446,7 @@ namespace
 {
 /// One solve of the knot system (34) for the knots target; xi empty if it is singular.
 std::vector<double> solveKnotSystem(const std::vector<double>& t, const std::vector<double>& target,
-  const Lookup& k, const std::vector<SpanWeights>& weights, bool closed, double& condition)
+  const Lookup& k, const std::vector<SpanWeights>& weights, bool closed, DeferredCondition& condition)
 {
   const int n = k.spans();
   const int knots = closed ? n : n + 1;
@@ -532,6 +532,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
       }
       target[i] = (1.0 - relax[i]) * t[i] + relax[i] * x;
     }
+    result.Condition = DeferredCondition();
     result.Xi = solveKnotSystem(t, target, k, weights, closed, result.Condition);
     std::vector<int> bad;
     if (result.Xi.empty())
@@ -646,13 +647,13 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
       rhs.row(row + 1) = (second * xd[0] * xd[0] + first * xd[1]).transpose();
     }
   }
-  double condition = 1.0;
+  DeferredCondition condition;
   const Eigen::MatrixX3d solution = solveSparse(unknowns, a, rhs, &condition);
-  return fromSolution(knots, abscissae, solution, condition, closed);
+  return fromSolution(knots, abscissae, solution, std::move(condition), closed);
 }
 
 TensionQuinticSpline TensionQuinticSpline::fromSolution(const std::vector<double>& t,
-  const Abscissae& abscissae, const Eigen::MatrixX3d& solution, double condition, bool closed)
+  const Abscissae& abscissae, const Eigen::MatrixX3d& solution, DeferredCondition condition, bool closed)
 {
   std::vector<Vec3> deBoor(solution.rows());
   for (Eigen::Index m = 0; m < solution.rows(); ++m)
@@ -662,7 +663,8 @@ TensionQuinticSpline TensionQuinticSpline::fromSolution(const std::vector<double
   TensionQuinticSpline spline =
     fromWeights(t, abscissae.Xi, deBoor, abscissae.Parameters, closed, abscissae.Weights);
   spline.Recoveries = abscissae.Recoveries;
-  spline.ConditionEstimate = std::max(condition, abscissae.Condition);
+  spline.Condition = std::move(condition);
+  spline.Condition.merge(abscissae.Condition);
   return spline;
 }
 
@@ -762,9 +764,9 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
     }
     normal.add(column, row, 6, points[j]);
   }
-  double condition = 1.0;
+  DeferredCondition condition;
   const Eigen::MatrixX3d solution = normal.solve(&condition);
-  return fromSolution(knots, abscissae, solution, condition, closed);
+  return fromSolution(knots, abscissae, solution, std::move(condition), closed);
 }
 
 std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const

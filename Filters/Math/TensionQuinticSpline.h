@@ -75,7 +75,7 @@ public:
     int Recoveries = 0;      ///< rounds of footnote-3 recovery
     bool KnotsMoved = false; ///< some knots are not where they were asked to be
     bool Increasing = false; ///< X' > 0 on every span (false only without recovery)
-    double Condition = 1.0;  ///< condition estimate of the last knot system solved
+    DeferredCondition Condition; ///< of the last knot system solved
   };
 
   /**
@@ -140,7 +140,7 @@ private:
   /// The spline of the de Boor points solved for on abscissae (one per row
   /// of solution), its condition the larger of the two systems'.
   static TensionQuinticSpline fromSolution(const std::vector<double>& t, const Abscissae& abscissae,
-    const Eigen::MatrixX3d& solution, double condition, bool closed);
+    const Eigen::MatrixX3d& solution, DeferredCondition condition, bool closed);
   static TensionQuinticSpline fromWeights(const std::vector<double>& t,
     const std::vector<double>& xi, const std::vector<Vec3>& points,
     const QuinticParameters& parameters, bool closed, const std::vector<SpanWeights>& weights);

@@ -381,7 +381,7 @@ VariableDegreeSpline VariableDegreeSpline::interpolate(const std::vector<Vec3>& 
   }
   VariableDegreeSpline spline(knots, closed);
   spline.Parameters = parameters;
-  spline.DeBoor = toPoints(solveSparse(unknowns, entries, rhs, &spline.ConditionEstimate));
+  spline.DeBoor = toPoints(solveSparse(unknowns, entries, rhs, &spline.Condition));
   spline.setNet();
   return spline;
 }
@@ -442,7 +442,7 @@ VariableDegreeSpline VariableDegreeSpline::approximate(const std::vector<Vec3>& 
   VariableDegreeSpline spline(knots, closed);
   spline.Parameters = parameters;
   const std::vector<Vec3> free =
-    toPoints(normal.solve(&spline.ConditionEstimate));
+    toPoints(normal.solve(&spline.Condition));
   for (int j = closed ? 0 : -2; j <= (closed ? spans - 1 : spans + 2); ++j)
   {
     spline.DeBoor.push_back(free[column(j)]);

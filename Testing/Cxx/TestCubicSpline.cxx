@@ -266,8 +266,9 @@ TEST(SparseSolve, ConditionEstimateIsWithinAFactorOfThreeOfTheTrueOne)
         }
       }
       const Eigen::MatrixX3d rhs = Eigen::MatrixX3d::Random(n, 3);
-      double estimate = 0.0;
-      const Eigen::MatrixX3d x = solveSparse(n, entries, rhs, &estimate);
+      DeferredCondition condition;
+      const Eigen::MatrixX3d x = solveSparse(n, entries, rhs, &condition);
+      const double estimate = condition.value();
       EXPECT_LT((dense * x - rhs).norm(), 1e-12 * dense.norm() * x.norm());
       // The condition of the rows scaled to a largest entry of 1.
       const Eigen::VectorXd rowMax = dense.cwiseAbs().rowwise().maxCoeff();
@@ -285,8 +286,29 @@ TEST(SparseSolve, ConditionEstimateOfAnIllConditionedSystemIsLarge)
 {
   // [[1, 1], [1, 1 + 1e-12]]: condition about 4e12, whatever the row scaling.
   const Triplets entries = { { 0, 0, 1.0 }, { 0, 1, 1.0 }, { 1, 0, 1.0 }, { 1, 1, 1.0 + 1e-12 } };
-  double estimate = 0.0;
-  solveSparse(2, entries, Eigen::MatrixX3d::Ones(2, 3), &estimate);
+  DeferredCondition condition;
+  solveSparse(2, entries, Eigen::MatrixX3d::Ones(2, 3), &condition);
+  const double estimate = condition.value();
   EXPECT_GT(estimate, UntrustedCondition);
   EXPECT_NEAR(estimate, 4e12, 0.1e12);
+}
+
+TEST(SparseSolve, ADeferredConditionIsTheLargestOfItsSystemsOnceAndForAll)
+{
+  EXPECT_EQ(DeferredCondition().value(), 1.0); // nothing solved
+  // diag(1, 1e-6) is row-scaled to the identity: condition 1. The
+  // ill-conditioned pair above: about 4e12.
+  const Triplets wellScaled = { { 0, 0, 1.0 }, { 1, 1, 1e-6 } };
+  const Triplets nearlySingular = { { 0, 0, 1.0 }, { 0, 1, 1.0 }, { 1, 0, 1.0 },
+    { 1, 1, 1.0 + 1e-12 } };
+  DeferredCondition first, second;
+  solveSparse(2, wellScaled, Eigen::MatrixX3d::Ones(2, 3), &first);
+  solveSparse(2, nearlySingular, Eigen::MatrixX3d::Ones(2, 3), &second);
+  EXPECT_NEAR(first.value(), 1.0, 1e-12);
+  DeferredCondition both = first;
+  both.merge(second);
+  EXPECT_NEAR(both.value(), 4e12, 0.1e12);
+  EXPECT_EQ(both.value(), both.value()); // estimated once, kept
+  first.merge(both);
+  EXPECT_EQ(first.value(), both.value()); // a merged estimate already made counts too
 }

@@ -1317,16 +1317,18 @@ public:
   ReportedCondition(std::unique_ptr<shapesplines::Curve> curve, double condition)
     : Curve(curve->knots(), curve->isClosed())
     , Inner(std::move(curve))
+    , Condition(condition)
   {
-    this->ConditionEstimate = condition;
   }
   shapesplines::Derivatives evaluateOnSpan(int span, double t, int order) const override
   {
     return this->Inner->evaluateOnSpan(span, t, order);
   }
+  double conditionEstimate() const override { return this->Condition; }
 
 private:
   std::unique_ptr<shapesplines::Curve> Inner;
+  double Condition;
 };
 
 /// The cubic filter, claiming an ill-conditioned system on every line with more than four points.
