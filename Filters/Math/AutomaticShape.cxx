@@ -298,6 +298,10 @@ public:
         break;
       }
     }
+    if (keptLevels == found.Levels)
+    {
+      return std::nullopt; // no trial kept: the curve found
+    }
     this->Levels = keptLevels;
     this->Curve = std::move(kept);
     std::fill(this->Stale.begin(), this->Stale.end(), 1);
@@ -1071,6 +1075,7 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
       best = std::move(search);
     }
   };
+  int previousStart = std::numeric_limits<int>::max();
   for (const int level : commonLevels(ladder.TopLevel))
   {
     if (violations == 0)
@@ -1082,6 +1087,16 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
     {
       continue;
     }
+    // Past the level that failed least, a level up pushes more spans beyond
+    // the bounds (and back to level 0): a start that fails more than the one
+    // below and than the best met ends the climb. (The quintic on 600 noisy
+    // helices: on the 49 lines retried, levels 12 and 16 failed 6-29 times
+    // where 8 failed 0-7; skipping 16 saved 3% of the default mode's work.)
+    if (search->violations() > previousStart && search->violations() > violations)
+    {
+      break;
+    }
+    previousStart = search->violations();
     const std::vector<int> failures = failuresPerWindow(search->audit());
     for (int j = 0; j < spans; ++j)
     {
