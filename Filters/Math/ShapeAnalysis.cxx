@@ -273,6 +273,11 @@ ShapeAuditor::ShapeAuditor(
   {
     this->TwistReverses.push_back(this->twistReversesAt(i));
   }
+  this->TwistTolerance = this->twistTolerances();
+}
+
+std::vector<double> ShapeAuditor::twistTolerances() const
+{
   // Near the torsion's zero a converging curve's torsion wavers about it by
   // its own error: a cubic's, first order, steps at every knot, and on
   // unevenly spaced points the discrete torsion is off by its own size there
@@ -282,7 +287,10 @@ ShapeAuditor::ShapeAuditor(
   // largest curvature). Both show in the steps of the discrete torsion from
   // segment to segment: within two spans of a knot where the data's torsion
   // reverses, a sign counts only beyond half the largest step there.
-  this->TwistTolerance.assign(std::max(spans, 0), tolerances.Curve);
+  const CleanPolyline& data = this->Data;
+  const DiscreteShape& shape = this->Shape;
+  const int spans = data.numberOfSpans();
+  std::vector<double> tolerance(std::max(spans, 0), this->Tolerances.Curve);
   constexpr int Reach = 2;
   constexpr double StepFraction = 0.5;
   auto exists = [&](int k) { return data.Closed || (k >= 0 && k < spans); };
@@ -326,11 +334,12 @@ ShapeAuditor::ShapeAuditor(
     {
       if (exists(k))
       {
-        double& allowed = this->TwistTolerance[wrapIndex(k, spans)];
+        double& allowed = tolerance[wrapIndex(k, spans)];
         allowed = std::max(allowed, StepFraction * step);
       }
     }
   }
+  return tolerance;
 }
 
 void ShapeAuditor::fail(const AuditSample& sample, ShapeCriterion criterion, int where, int spanA,

@@ -192,6 +192,8 @@ private:
   /// Whether the data's torsion changes sign at knot i (both segments
   /// twisted), or may (an open line's knot next to an end, its inner span twisted).
   bool twistReversesAt(int i) const;
+  /// TwistTolerance's values (after Scale and TwistReverses).
+  std::vector<double> twistTolerances() const;
   /// A span next to such a knot: the torsion's failure beyond the one sign change allowed.
   double transitionDeficiency(int span) const;
 
