@@ -133,7 +133,10 @@ CubicSpline CubicSpline::interpolate(const std::vector<Vec3>& points,
   else
   {
     const bool needEnds = ends == CubicEndCondition::Clamped && !clamped;
-    const EndDerivatives d = needEnds ? parabolaEndDerivatives(points, knots) : clamped.value_or(EndDerivatives{});
+    // Read for clamped ends only; zero otherwise, not left uninitialised.
+    const EndDerivatives d = needEnds
+      ? parabolaEndDerivatives(points, knots)
+      : clamped.value_or(EndDerivatives{ Vec3::Zero(), Vec3::Zero() });
     moments = solveMoments(points, h, closed, ends, d, condition);
   }
 
