@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -202,7 +203,11 @@ public:
     : LU(lu)
   {
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const { return this->LU.solve(b); }
+  template <typename Matrix>
+  Matrix solve(const Matrix& b) const
+  {
+    return this->LU.solve(b);
+  }
   Eigen::VectorXd solveTransposed(const Eigen::VectorXd& c) const
   {
     return this->LU.transpose().solve(c);
@@ -211,6 +216,35 @@ public:
 private:
   SparseLU& LU; // transpose() is not const
 };
+
+/**
+ * Factorises the n x n matrix of entries, as a band when it is one, and
+ * calls use(factorisation); false, without calling, when it is singular.
+ * The solve and its later condition estimate factorise alike.
+ */
+template <typename Use>
+bool withFactorisation(int n, const Triplets& entries, Use&& use)
+{
+  if (const std::optional<BandLU> band = BandLU::factor(n, entries))
+  {
+    if (band->singular())
+    {
+      return false;
+    }
+    use(*band);
+    return true;
+  }
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  SparseLU lu;
+  lu.compute(matrix);
+  if (lu.info() != Eigen::Success)
+  {
+    return false;
+  }
+  use(GeneralLU(lu));
+  return true;
+}
 
 /**
  * Estimates ||A^-1||_1 from a factorisation of the n x n matrix A (Hager's
@@ -297,39 +331,20 @@ std::pair<Triplets, Eigen::MatrixX3d> equilibrateRows(
 Eigen::MatrixX3d solveSparse(
   int n, const Triplets& rawEntries, const Eigen::MatrixX3d& rawRhs, DeferredCondition* condition)
 {
-  auto [entries, rhs] = equilibrateRows(n, rawEntries, rawRhs);
+  auto scaled = equilibrateRows(n, rawEntries, rawRhs);
+  const Eigen::MatrixX3d& rhs = scaled.second;
   Eigen::MatrixX3d solution;
-  if (const std::optional<BandLU> band = BandLU::factor(n, entries))
+  if (!withFactorisation(n, scaled.first, [&](const auto& lu) { solution = lu.solve(rhs); }))
   {
-    if (band->singular())
-    {
-      singularSystem();
-    }
-    solution = band->solve(rhs);
-    if (!solution.allFinite())
-    {
-      throw std::runtime_error("spline system could not be solved");
-    }
+    singularSystem();
   }
-  else
+  if (!solution.allFinite())
   {
-    Eigen::SparseMatrix<double> matrix(n, n);
-    matrix.setFromTriplets(entries.begin(), entries.end());
-    SparseLU lu;
-    lu.compute(matrix);
-    if (lu.info() != Eigen::Success)
-    {
-      singularSystem();
-    }
-    solution = lu.solve(rhs);
-    if (lu.info() != Eigen::Success || !solution.allFinite())
-    {
-      throw std::runtime_error("spline system could not be solved");
-    }
+    throw std::runtime_error("spline system could not be solved");
   }
   if (condition)
   {
-    condition->record(n, std::move(entries));
+    condition->record(n, std::move(scaled.first));
   }
   return solution;
 }
@@ -339,9 +354,10 @@ void DeferredCondition::record(int n, Triplets entries)
   this->Pending.push_back({ n, std::move(entries) });
 }
 
-void DeferredCondition::merge(const DeferredCondition& other)
+void DeferredCondition::merge(DeferredCondition other)
 {
-  this->Pending.insert(this->Pending.end(), other.Pending.begin(), other.Pending.end());
+  this->Pending.insert(this->Pending.end(), std::make_move_iterator(other.Pending.begin()),
+    std::make_move_iterator(other.Pending.end()));
   this->Largest = std::max(this->Largest, other.Largest);
 }
 
@@ -350,26 +366,9 @@ double DeferredCondition::value() const
   for (const System& system : this->Pending)
   {
     // Factorised again: the solve's factorisation was not kept for it.
-    const int n = system.Unknowns;
     double estimate = std::numeric_limits<double>::infinity();
-    if (const std::optional<BandLU> band = BandLU::factor(n, system.Entries))
-    {
-      if (!band->singular())
-      {
-        estimate = conditionOf(*band, n, system.Entries);
-      }
-    }
-    else
-    {
-      Eigen::SparseMatrix<double> matrix(n, n);
-      matrix.setFromTriplets(system.Entries.begin(), system.Entries.end());
-      SparseLU lu;
-      lu.compute(matrix);
-      if (lu.info() == Eigen::Success)
-      {
-        estimate = conditionOf(GeneralLU(lu), n, system.Entries);
-      }
-    }
+    withFactorisation(system.Unknowns, system.Entries,
+      [&](const auto& lu) { estimate = conditionOf(lu, system.Unknowns, system.Entries); });
     this->Largest = std::max(this->Largest, estimate);
   }
   this->Pending.clear();

@@ -38,8 +38,8 @@ public:
   double value() const;
   /// Records a system of n unknowns, its entries row-scaled as solveSparse solved it.
   void record(int n, Triplets entries);
-  /// Records another's systems too (a curve solved in several systems).
-  void merge(const DeferredCondition& other);
+  /// Takes another's systems too (a curve solved in several systems).
+  void merge(DeferredCondition other);
 
 private:
   struct System

@@ -601,7 +601,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   {
     throw std::invalid_argument("tension quintic spline: too few points or knots of the wrong size");
   }
-  const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
+  Abscissae abscissae = solveAbscissae(knots, parameters, closed);
   const std::vector<SpanWeights>& weights = abscissae.Weights;
   const int unknowns = closed ? n : n + 5;
   Triplets a;
@@ -649,11 +649,11 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   }
   DeferredCondition condition;
   const Eigen::MatrixX3d solution = solveSparse(unknowns, a, rhs, &condition);
-  return fromSolution(knots, abscissae, solution, std::move(condition), closed);
+  return fromSolution(knots, std::move(abscissae), solution, std::move(condition), closed);
 }
 
 TensionQuinticSpline TensionQuinticSpline::fromSolution(const std::vector<double>& t,
-  const Abscissae& abscissae, const Eigen::MatrixX3d& solution, DeferredCondition condition, bool closed)
+  Abscissae abscissae, const Eigen::MatrixX3d& solution, DeferredCondition condition, bool closed)
 {
   std::vector<Vec3> deBoor(solution.rows());
   for (Eigen::Index m = 0; m < solution.rows(); ++m)
@@ -664,7 +664,7 @@ TensionQuinticSpline TensionQuinticSpline::fromSolution(const std::vector<double
     fromWeights(t, abscissae.Xi, deBoor, abscissae.Parameters, closed, abscissae.Weights);
   spline.Recoveries = abscissae.Recoveries;
   spline.Condition = std::move(condition);
-  spline.Condition.merge(abscissae.Condition);
+  spline.Condition.merge(std::move(abscissae.Condition));
   return spline;
 }
 
@@ -740,7 +740,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   {
     throw std::invalid_argument("tension quintic spline: too few points to approximate");
   }
-  const Abscissae abscissae = solveAbscissae(knots, parameters, closed);
+  Abscissae abscissae = solveAbscissae(knots, parameters, closed);
   const std::vector<SpanWeights>& weights = abscissae.Weights;
   // The same X with any de Boor points: it maps the data parameters to spans and t.
   const TensionQuinticSpline shape = fromWeights(knots, abscissae.Xi,
@@ -766,7 +766,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   }
   DeferredCondition condition;
   const Eigen::MatrixX3d solution = normal.solve(&condition);
-  return fromSolution(knots, abscissae, solution, std::move(condition), closed);
+  return fromSolution(knots, std::move(abscissae), solution, std::move(condition), closed);
 }
 
 std::vector<SpanParameter> TensionQuinticSpline::spanParameters() const

@@ -139,7 +139,7 @@ private:
   /// fromControlPoints with the construction's weights already computed.
   /// The spline of the de Boor points solved for on abscissae (one per row
   /// of solution), its condition the larger of the two systems'.
-  static TensionQuinticSpline fromSolution(const std::vector<double>& t, const Abscissae& abscissae,
+  static TensionQuinticSpline fromSolution(const std::vector<double>& t, Abscissae abscissae,
     const Eigen::MatrixX3d& solution, DeferredCondition condition, bool closed);
   static TensionQuinticSpline fromWeights(const std::vector<double>& t,
     const std::vector<double>& xi, const std::vector<Vec3>& points,
