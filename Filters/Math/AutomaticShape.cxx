@@ -611,18 +611,20 @@ private:
   }
 
   /**
-   * The levels refine() tries a span at, other than its own: 0 and 1 (the
-   * searches raise a neighbourhood together and overshoot: most of what
-   * refining mends on short noisy lines) and a quarter, half and all of the
-   * top (where a span stalled or met the bounds short of the level that mends it).
+   * The levels refine() tries a span at, other than its own: 0 (unless the
+   * ladder says otherwise) and 1 (the searches raise a neighbourhood together
+   * and overshoot: most of what refining mends on short noisy lines) and a
+   * quarter, half and all of the top (where a span stalled or met the bounds
+   * short of the level that mends it).
    */
   std::vector<int> refinedLevels(int level) const
   {
     const int top = this->Ladder.TopLevel;
+    const int lowest = this->Ladder.RefineBackToLevelZero ? 0 : 1;
     std::vector<int> levels;
     for (const int other : { 0, 1, top / 4, top / 2, top })
     {
-      if (other != level && other <= top &&
+      if (other != level && other >= lowest && other <= top &&
         std::find(levels.begin(), levels.end(), other) == levels.end())
       {
         levels.push_back(other);

@@ -425,6 +425,7 @@ CurveBuilder generalizedCubicBuilder(const GeneralizedCubicOptions& options)
     ladder.TopLevel = stepsToCap(*std::min_element(tension.begin(), tension.end()), raise);
     ladder.MaxRounds = options.MaxRounds;
     ladder.RetryFromCommonLevel = true;
+    ladder.RefineBackToLevelZero = false;
     ladder.Build = [&](const std::vector<int>& levels) {
       std::vector<SpaceKernel> kernels;
       kernels.reserve(spans);

@@ -76,6 +76,7 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
   const CleanPolyline& data = context.Data;
   ShapeLadder ladder = quinticLadder(quintic);
   ladder.RetryFromCommonLevel = true;
+  ladder.RefineBackToLevelZero = false;
   ladder.Build = [&](const std::vector<int>& levels) {
     return builtAt(levels, [&] {
       return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(

@@ -546,6 +546,7 @@ BuiltCurve interpolateData(const FitContext& context, const VariableDegreeOption
   ladder.Reach = 3; // a knot's parameter moves the spans on both sides and the global solve
   ladder.RetrySpanBySpan = true; // the interpolation is meant to reach zero violations
   ladder.RetryFromCommonLevel = true;
+  ladder.RefineBackToLevelZero = false;
   ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
     const std::vector<double> degrees = degreesAt(startDegrees, levels, data.Closed, options.MaxDegree);
     return std::make_unique<VariableDegreeSpline>(VariableDegreeSpline::interpolate(data.Points,
