@@ -77,10 +77,14 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
   ShapeLadder ladder = quinticLadder(quintic);
   ladder.RetryFromCommonLevel = true;
   ladder.RefineBackToLevelZero = false;
+  // The same at every level: solved once, not in each of the search's builds.
+  const auto ends = data.Closed ? std::nullopt
+                                : std::optional(TensionQuinticSpline::dataEnds(data.Points, context.Knots));
   ladder.Build = [&](const std::vector<int>& levels) {
     return builtAt(levels, [&] {
-      return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(
-        data.Points, context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed));
+      return std::make_unique<TensionQuinticSpline>(
+        TensionQuinticSpline::interpolate(data.Points, context.Knots,
+          loweredParameters(quintic, levels, data.Closed), data.Closed, ends ? &*ends : nullptr));
     });
   };
   return fixedOrAutomatic(quintic.Automatic, context, data, ladder);

@@ -592,8 +592,16 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
   }
 }
 
+std::array<std::array<Vec3, 3>, 2> TensionQuinticSpline::dataEnds(
+  const std::vector<Vec3>& points, const std::vector<double>& knots)
+{
+  return { polynomialEndDerivatives(points, knots, true, 6),
+    polynomialEndDerivatives(points, knots, false, 6) };
+}
+
 TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& points,
-  const std::vector<double>& knots, const QuinticParameters& parameters, bool closed)
+  const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
+  const std::array<std::array<Vec3, 3>, 2>* ends)
 {
   const int count = static_cast<int>(points.size());
   const int n = closed ? count : count - 1;
@@ -635,7 +643,8 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
       const QuinticParameters& p = abscissae.Parameters;
       const double w = std::min(
         { 1.0, p.Gamma[knot], p.Continuity == QuinticContinuity::C3 ? p.Lambda[knot] : 1.0 });
-      const auto polynomial = polynomialEndDerivatives(points, knots, start, 6);
+      const auto polynomial =
+        ends ? (*ends)[start ? 0 : 1] : polynomialEndDerivatives(points, knots, start, 6);
       const Vec3 chord = start ? Vec3((points[1] - points[0]) / (knots[1] - knots[0]))
                                : Vec3((points[n] - points[n - 1]) / (knots[n] - knots[n - 1]));
       const Vec3 first = w * polynomial[0] + (1.0 - w) * chord;

@@ -99,9 +99,16 @@ public:
    * s' and s'' at each end from the polynomial through the six (or fewer)
    * end points, blended by w = min(1, gamma, lambda) of the end knot towards
    * the limit polygon's: s' = w p' + (1 - w) chord slope, s'' = w p''.
+   * ends: those polynomials' derivatives (dataEnds), given by a caller that
+   * builds many curves on the same points and knots.
    */
   static TensionQuinticSpline interpolate(const std::vector<Vec3>& points,
-    const std::vector<double>& knots, const QuinticParameters& parameters, bool closed);
+    const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
+    const std::array<std::array<Vec3, 3>, 2>* ends = nullptr);
+  /// The derivatives at an open line's start and end of the polynomials
+  /// interpolate() takes its end conditions from (polynomialEndDerivatives).
+  static std::array<std::array<Vec3, 3>, 2> dataEnds(
+    const std::vector<Vec3>& points, const std::vector<double>& knots);
 
   /**
    * The spline with knots x_i = knots[i] (via (34)) closest in least squares
