@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace shapesplines
@@ -78,8 +79,9 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
   ladder.RetryFromCommonLevel = true;
   ladder.RefineBackToLevelZero = false;
   // The same at every level: solved once, not in each of the search's builds.
-  const auto ends = data.Closed ? std::nullopt
-                                : std::optional(TensionQuinticSpline::dataEnds(data.Points, context.Knots));
+  const auto ends = data.Closed
+    ? std::nullopt
+    : std::optional(TensionQuinticSpline::dataEnds(data.Points, context.Knots));
   ladder.Build = [&](const std::vector<int>& levels) {
     return builtAt(levels, [&] {
       return std::make_unique<TensionQuinticSpline>(
