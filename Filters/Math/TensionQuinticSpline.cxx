@@ -592,7 +592,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
   }
 }
 
-std::array<std::array<Vec3, 3>, 2> TensionQuinticSpline::dataEnds(
+TensionQuinticSpline::EndDerivatives TensionQuinticSpline::dataEnds(
   const std::vector<Vec3>& points, const std::vector<double>& knots)
 {
   return { polynomialEndDerivatives(points, knots, true, 6),
@@ -601,7 +601,7 @@ std::array<std::array<Vec3, 3>, 2> TensionQuinticSpline::dataEnds(
 
 TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& points,
   const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
-  const std::array<std::array<Vec3, 3>, 2>* ends)
+  const EndDerivatives* ends)
 {
   const int count = static_cast<int>(points.size());
   const int n = closed ? count : count - 1;

@@ -62,6 +62,8 @@ public:
   /// Per span, the weights of its six Bezier points (rows) on the de Boor
   /// points D_{i-2}..D_{i+3} (columns), from the geometric construction.
   using SpanWeights = Eigen::Matrix<double, 6, 6>;
+  /// Derivatives 1-3 at an open line's start and end (polynomialEndDerivatives).
+  using EndDerivatives = std::array<std::array<Vec3, 3>, 2>;
 
   struct Abscissae
   {
@@ -104,11 +106,10 @@ public:
    */
   static TensionQuinticSpline interpolate(const std::vector<Vec3>& points,
     const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
-    const std::array<std::array<Vec3, 3>, 2>* ends = nullptr);
+    const EndDerivatives* ends = nullptr);
   /// The derivatives at an open line's start and end of the polynomials
   /// interpolate() takes its end conditions from (polynomialEndDerivatives).
-  static std::array<std::array<Vec3, 3>, 2> dataEnds(
-    const std::vector<Vec3>& points, const std::vector<double>& knots);
+  static EndDerivatives dataEnds(const std::vector<Vec3>& points, const std::vector<double>& knots);
 
   /**
    * The spline with knots x_i = knots[i] (via (34)) closest in least squares
