@@ -308,7 +308,8 @@ TEST(SparseSolve, ADeferredConditionIsTheLargestOfItsSystemsOnceAndForAll)
   DeferredCondition both = first;
   both.merge(second);
   EXPECT_NEAR(both.value(), 4e12, 0.1e12);
-  EXPECT_EQ(both.value(), both.value()); // estimated once, kept
+  // Estimated, both keeps the value and no longer its systems: merged into
+  // first, it is that kept value that counts.
   first.merge(both);
-  EXPECT_EQ(first.value(), both.value()); // a merged estimate already made counts too
+  EXPECT_EQ(first.value(), both.value());
 }
