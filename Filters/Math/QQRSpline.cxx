@@ -422,9 +422,10 @@ public:
   {
   }
 
-  /// Span k's Bezier points from P(j), j = k-1..k+2 (P takes the paper's index minus one).
+  /// Span k's m-th Bezier point (m = 0..4) from P(j), j = k-1..k+2 (P takes
+  /// the paper's index minus one): an interpolation row needs one of the five.
   template <class T, class Control>
-  std::array<T, 5> bezier(int k, const Control& P) const
+  T bezierPoint(int k, int m, const Control& P) const
   {
     // R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4 (paper index i = k + 2).
     auto R = [&](int i) -> T { return (1.0 - this->Z(i)) * P(i - 1) + this->Z(i) * P(i); };
@@ -437,9 +438,28 @@ public:
       return u * u * R(i - 1) + 2.0 * u * m * S(i) + m * m * R(i);
     };
     const int i = k + 2;
-    const T middle = R(i - 1);
-    return { Tk(i - 1), T(this->ups(i - 1) * S(i - 1) + this->mu(i - 1) * middle), middle,
-      T(this->ups(i) * middle + this->mu(i) * S(i)), Tk(i) };
+    switch (m)
+    {
+      case 0:
+        return Tk(i - 1);
+      case 1:
+        return T(this->ups(i - 1) * S(i - 1) + this->mu(i - 1) * R(i - 1));
+      case 2:
+        return R(i - 1);
+      case 3:
+        return T(this->ups(i) * R(i - 1) + this->mu(i) * S(i));
+      default:
+        return Tk(i);
+    }
+  }
+
+  /// Span k's five Bezier points (see bezierPoint).
+  template <class T, class Control>
+  std::array<T, 5> bezier(int k, const Control& P) const
+  {
+    return { this->bezierPoint<T>(k, 0, P), this->bezierPoint<T>(k, 1, P),
+      this->bezierPoint<T>(k, 2, P), this->bezierPoint<T>(k, 3, P),
+      this->bezierPoint<T>(k, 4, P) };
   }
 
   /// The local shape parameters in use, one per point.
@@ -587,15 +607,14 @@ private:
 Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<double, 2>& exponents,
   double h, int k, bool end, int r)
 {
-  const auto weights = geometry.bezier<Eigen::Vector4d>(
-    k, [k](int j) { return Eigen::Vector4d(Eigen::Vector4d::Unit(j - (k - 1))); });
+  const auto unit = [k](int j) { return Eigen::Vector4d(Eigen::Vector4d::Unit(j - (k - 1))); };
   const auto basis = qqrBasis(end ? 1.0 : 0.0, exponents[0], exponents[1], r);
   Eigen::Vector4d out = Eigen::Vector4d::Zero();
   for (int m = 0; m < 5; ++m)
   {
     if (basis[m][r] != 0.0)
     {
-      out += basis[m][r] * weights[m];
+      out += basis[m][r] * geometry.bezierPoint<Eigen::Vector4d>(k, m, unit);
     }
   }
   return out / std::pow(h, r);
