@@ -21,6 +21,12 @@ Vec3 unitVector(const Vec3& v)
   return scaled / scaled.norm();
 }
 
+/// v / |v| given robustNorm(v): the division alone where squaring was exact.
+Vec3 unitVector(const Vec3& v, double norm)
+{
+  return norm > 1e-140 && norm < 1e140 ? Vec3(v / norm) : unitVector(v);
+}
+
 /// A unit vector orthogonal to unit t, from the coordinate axis least aligned with it.
 Vec3 anyNormal(const Vec3& t)
 {
@@ -80,7 +86,7 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
     // A stationary point (s' = 0) keeps the direction of s'', or the last tangent.
     if (speed > 0)
     {
-      f.Tangent = unitVector(d1);
+      f.Tangent = unitVector(d1, speed);
     }
     else if (robustNorm(d2) > 0)
     {
@@ -99,7 +105,8 @@ void frenetFrames(const std::vector<Derivatives>& samples, const std::vector<dou
     if (f.Curvature > flatCurvature[k])
     {
       // Orthonormalise against the tangent: near-parallel s', s'' round badly.
-      f.Normal = unitVector(unitVector(cross).cross(f.Tangent));
+      const Vec3 normal = unitVector(cross, crossNorm).cross(f.Tangent);
+      f.Normal = unitVector(normal, normal.norm());
       f.Binormal = f.Tangent.cross(f.Normal);
       f.Torsion = d1.dot(d2.cross(d3)) / (crossNorm * crossNorm);
     }
