@@ -608,6 +608,12 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
   double h, int k, bool end, int r)
 {
   const auto unit = [k](int j) { return Eigen::Vector4d(Eigen::Vector4d::Unit(j - (k - 1))); };
+  if (r == 0)
+  {
+    // A0(0) = A4(1) = 1 and the others 0 (Theorem 1, exactly): a span starts
+    // at its first Bezier point and ends at its last.
+    return geometry.bezierPoint<Eigen::Vector4d>(k, end ? 4 : 0, unit);
+  }
   const auto basis = qqrBasis(end ? 1.0 : 0.0, exponents[0], exponents[1], r);
   Eigen::Vector4d out = Eigen::Vector4d::Zero();
   for (int m = 0; m < 5; ++m)
