@@ -422,44 +422,23 @@ public:
   {
   }
 
-  /// Span k's m-th Bezier point (m = 0..4) from P(j), j = k-1..k+2 (P takes
-  /// the paper's index minus one): an interpolation row needs one of the five.
-  template <class T, class Control>
-  T bezierPoint(int k, int m, const Control& P) const
-  {
-    // R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4 (paper index i = k + 2).
-    auto R = [&](int i) -> T { return (1.0 - this->Z(i)) * P(i - 1) + this->Z(i) * P(i); };
-    auto S = [&](int i) -> T {
-      const double x = this->X(i), y = this->Y(i);
-      return y * P(i - 2) + (1.0 - x - y) * P(i - 1) + x * P(i);
-    };
-    auto Tk = [&](int i) -> T {
-      const double m = this->mu(i), u = this->ups(i);
-      return u * u * R(i - 1) + 2.0 * u * m * S(i) + m * m * R(i);
-    };
-    const int i = k + 2;
-    switch (m)
-    {
-      case 0:
-        return Tk(i - 1);
-      case 1:
-        return T(this->ups(i - 1) * S(i - 1) + this->mu(i - 1) * R(i - 1));
-      case 2:
-        return R(i - 1);
-      case 3:
-        return T(this->ups(i) * R(i - 1) + this->mu(i) * S(i));
-      default:
-        return Tk(i);
-    }
-  }
-
-  /// Span k's five Bezier points (see bezierPoint).
+  /// Span k's Bezier points from P(j), j = k-1..k+2 (P takes the paper's index minus one).
   template <class T, class Control>
   std::array<T, 5> bezier(int k, const Control& P) const
   {
-    return { this->bezierPoint<T>(k, 0, P), this->bezierPoint<T>(k, 1, P),
-      this->bezierPoint<T>(k, 2, P), this->bezierPoint<T>(k, 3, P),
-      this->bezierPoint<T>(k, 4, P) };
+    const auto [R, S, Tk] = this->pieces<T>(P);
+    const int i = k + 2;
+    const T middle = R(i - 1);
+    return { Tk(i - 1), T(this->ups(i - 1) * S(i - 1) + this->mu(i - 1) * middle), middle,
+      T(this->ups(i) * middle + this->mu(i) * S(i)), Tk(i) };
+  }
+
+  /// Span k's first (end false) or last Bezier point alone: where it starts or ends.
+  template <class T, class Control>
+  T bezierEnd(int k, bool end, const Control& P) const
+  {
+    const auto Tk = std::get<2>(this->pieces<T>(P));
+    return Tk(end ? k + 2 : k + 1);
   }
 
   /// The local shape parameters in use, one per point.
@@ -476,6 +455,23 @@ public:
   }
 
 private:
+  /// R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4 (paper
+  /// index i = k + 2 for span k), as combinations of the control points P.
+  template <class T, class Control>
+  auto pieces(const Control& P) const
+  {
+    auto R = [this, &P](int i) -> T { return (1.0 - this->Z(i)) * P(i - 1) + this->Z(i) * P(i); };
+    auto S = [this, &P](int i) -> T {
+      const double x = this->X(i), y = this->Y(i);
+      return y * P(i - 2) + (1.0 - x - y) * P(i - 1) + x * P(i);
+    };
+    auto Tk = [this, R, S](int i) -> T {
+      const double m = this->mu(i), u = this->ups(i);
+      return u * u * R(i - 1) + 2.0 * u * m * S(i) + m * m * R(i);
+    };
+    return std::make_tuple(R, S, Tk);
+  }
+
   /// x, y and z at the paper's index i, each made of several intervals and
   /// neighbouring spans' shapes: computed once per index (a span's Bezier
   /// points ask for them a dozen times; qqr builds spent a sixth of their
@@ -612,15 +608,16 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
   {
     // A0(0) = A4(1) = 1 and the others 0 (Theorem 1, exactly): a span starts
     // at its first Bezier point and ends at its last.
-    return geometry.bezierPoint<Eigen::Vector4d>(k, end ? 4 : 0, unit);
+    return geometry.bezierEnd<Eigen::Vector4d>(k, end, unit);
   }
+  const auto weights = geometry.bezier<Eigen::Vector4d>(k, unit);
   const auto basis = qqrBasis(end ? 1.0 : 0.0, exponents[0], exponents[1], r);
   Eigen::Vector4d out = Eigen::Vector4d::Zero();
   for (int m = 0; m < 5; ++m)
   {
     if (basis[m][r] != 0.0)
     {
-      out += basis[m][r] * geometry.bezierPoint<Eigen::Vector4d>(k, m, unit);
+      out += basis[m][r] * weights[m];
     }
   }
   return out / std::pow(h, r);
