@@ -790,12 +790,13 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   spline.KnotShape = geometry.knotShape();
   spline.Straightness = knotShape.Straightness;
   spline.Flattening = knotShape.Flattening;
-  spline.Bezier.resize(spans);
-  spline.QuarticPower.resize(spans);
+  // Appended, not resized and overwritten: zeroing them was 2.6% of a qqr build.
+  spline.Bezier.reserve(spans);
+  spline.QuarticPower.reserve(spans);
   for (int k = 0; k < spans; ++k)
   {
-    spline.Bezier[k] = geometry.bezier<Vec3>(k, P);
-    spline.QuarticPower[k] = bezierToPower(spline.Bezier[k]);
+    spline.Bezier.push_back(geometry.bezier<Vec3>(k, P));
+    spline.QuarticPower.push_back(bezierToPower(spline.Bezier.back()));
   }
   return spline;
 }
