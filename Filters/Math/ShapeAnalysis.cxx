@@ -504,29 +504,31 @@ ShapeAudit ShapeAuditor::result() const
   const size_t spans = this->Findings.size();
   audit.SpanMask.assign(spans, 0u);
   audit.SpanDeficiency.assign(spans, 0.0);
-  std::vector<std::vector<Finding>> findings = this->Findings;
+  auto record = [&](const Finding& f) {
+    for (const int span : f.Spans)
+    {
+      if (span >= 0 && span < static_cast<int>(spans))
+      {
+        audit.SpanMask[span] |= criterionBit(f.Failure.Criterion);
+        audit.SpanDeficiency[span] += f.Deficiency;
+      }
+    }
+    audit.Where.push_back(f.Failure);
+  };
+  // Each span's findings, then its torsion sign's transition (not a copy of
+  // the findings with it appended: the automatic modes ask for tens of
+  // thousands of results).
   for (size_t j = 0; j < spans; ++j)
   {
+    for (const Finding& f : this->Findings[j])
+    {
+      record(f);
+    }
     const double deficiency = this->transitionDeficiency(static_cast<int>(j));
     if (deficiency > 0.0)
     {
       const int span = static_cast<int>(j);
-      findings[j].push_back({ { ShapeCriterion::TorsionSignOnSpan, span }, { span, span }, deficiency });
-    }
-  }
-  for (const auto& found : findings)
-  {
-    for (const Finding& f : found)
-    {
-      for (const int span : f.Spans)
-      {
-        if (span >= 0 && span < static_cast<int>(spans))
-        {
-          audit.SpanMask[span] |= criterionBit(f.Failure.Criterion);
-          audit.SpanDeficiency[span] += f.Deficiency;
-        }
-      }
-      audit.Where.push_back(f.Failure);
+      record({ { ShapeCriterion::TorsionSignOnSpan, span }, { span, span }, deficiency });
     }
   }
   auto key = [](const ShapeFailure& f) { return std::make_pair(static_cast<int>(f.Criterion), f.Where); };
