@@ -624,6 +624,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   {
     // s' = C'/X' and s'' = (C'' - s' X'')/X'^2 given: linear in the de Boor points.
     const double period = 0.0;
+    const EndDerivatives polynomialEnds = ends ? *ends : dataEnds(points, knots);
     for (const bool start : { true, false })
     {
       const int base = start ? -2 : n - 3;
@@ -643,8 +644,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
       const QuinticParameters& p = abscissae.Parameters;
       const double w = std::min(
         { 1.0, p.Gamma[knot], p.Continuity == QuinticContinuity::C3 ? p.Lambda[knot] : 1.0 });
-      const auto polynomial =
-        ends ? (*ends)[start ? 0 : 1] : polynomialEndDerivatives(points, knots, start, 6);
+      const auto& polynomial = polynomialEnds[start ? 0 : 1];
       const Vec3 chord = start ? Vec3((points[1] - points[0]) / (knots[1] - knots[0]))
                                : Vec3((points[n] - points[n - 1]) / (knots[n] - knots[n - 1]));
       const Vec3 first = w * polynomial[0] + (1.0 - w) * chord;
