@@ -6,12 +6,18 @@ namespace shapesplines
 {
 namespace
 {
+/// Whether a norm taken by squaring is exact: its squares neither under- nor overflowed.
+bool squaredExactly(double norm)
+{
+  return norm > 1e-140 && norm < 1e140;
+}
+
 /// |v|, also where squaring under- or overflows (derivatives at a hairpin of a
 /// line 1e-100 wide): the fast norm where it is exact, stableNorm elsewhere.
 double robustNorm(const Vec3& v)
 {
   const double fast = v.norm();
-  return fast > 1e-140 && fast < 1e140 ? fast : v.stableNorm();
+  return squaredExactly(fast) ? fast : v.stableNorm();
 }
 
 /// v / |v| of unit length even for subnormal v: scaled by its largest component first.
@@ -24,7 +30,7 @@ Vec3 unitVector(const Vec3& v)
 /// v / |v| given robustNorm(v): the division alone where squaring was exact.
 Vec3 unitVector(const Vec3& v, double norm)
 {
-  return norm > 1e-140 && norm < 1e140 ? Vec3(v / norm) : unitVector(v);
+  return squaredExactly(norm) ? Vec3(v / norm) : unitVector(v);
 }
 
 /// A unit vector orthogonal to unit t, from the coordinate axis least aligned with it.
