@@ -92,6 +92,19 @@ std::vector<Vec3> quarticTwist(double first)
   }
   return points;
 }
+
+/// (t, t^2, t^5) at t = -1.125 + 0.25 i, i = 0..9: its torsion
+/// 120 t^2 / |r' x r''|^2 touches zero in the middle of segment 4 and keeps its sign.
+std::vector<Vec3> quinticTouch()
+{
+  std::vector<Vec3> points;
+  for (int i = 0; i <= 9; ++i)
+  {
+    const double t = -1.125 + 0.25 * i;
+    points.emplace_back(t, t * t, std::pow(t, 5));
+  }
+  return points;
+}
 } // namespace
 
 TEST(DiscreteShape, HelixHasPositiveTorsionAndConvergingCurvature)
@@ -407,6 +420,43 @@ TEST(ShapeAudit, TorsionWaveringAboutItsZeroIsNoSignChange)
   EXPECT_EQ(failuresWithTorsion(fit, wavering(0.4)), 0); // wrong, but within its error
   EXPECT_EQ(failuresWithTorsion(fit, wavering(0.6)), 1); // beyond it: span 2
   EXPECT_EQ(failuresWithTorsion(fit, wavering(-0.6)), 0); // the right sign
+}
+
+TEST(ShapeAudit, TorsionTouchingZeroMayWaverThere)
+{
+  // Where a segment twists its neighbours' way by under a third of the less
+  // twisted one, the torsion nears zero without crossing it (and on noisy
+  // points, where a segment's four points happen to lie nearly in a plane):
+  // a converging curve's torsion wavers about zero by its error there too,
+  // so a wrong sign on that span counts beyond half the step down to its
+  // discrete torsion, not before; on the other spans it counts as ever.
+  const FittedPolyline fit = fitPolyline(quinticTouch(), FitOptions{}, cubicBuilder());
+  const DiscreteShape& shape = fit.Shape;
+  std::vector<int> dips;
+  for (int j = 1; j + 1 < fit.Data.numberOfSpans(); ++j)
+  {
+    const double weaker = std::min(std::abs(shape.Torsion[j - 1]), std::abs(shape.Torsion[j + 1]));
+    if (shape.Twisted[j - 1] && shape.Twisted[j] && shape.Twisted[j + 1] &&
+      shape.Torsion[j - 1] * shape.Torsion[j] > 0 && shape.Torsion[j] * shape.Torsion[j + 1] > 0 &&
+      3.0 * std::abs(shape.Torsion[j]) < weaker)
+    {
+      dips.push_back(j);
+    }
+  }
+  ASSERT_EQ(dips.size(), 1u);
+  const int dip = dips[0];
+  const double sign = shape.Torsion[dip] > 0 ? 1.0 : -1.0;
+  const double step = std::min(std::abs(shape.Torsion[dip - 1]), std::abs(shape.Torsion[dip + 1])) -
+    std::abs(shape.Torsion[dip]);
+  auto wrongOn = [&](int span, double size) {
+    return [=](double u) { return u > span + 0.3 && u < span + 0.7 ? -sign * size * step : sign; };
+  };
+  EXPECT_EQ(failuresWithTorsion(fit, wrongOn(dip, 0.4)), 0); // within its error
+  EXPECT_EQ(failuresWithTorsion(fit, wrongOn(dip, 0.6)), 1); // beyond it
+  for (const int span : { dip - 2, dip + 2 })
+  {
+    EXPECT_EQ(failuresWithTorsion(fit, wrongOn(span, 0.4)), 1) << span; // no dip there
+  }
 }
 
 TEST(ShapeAudit, TorsionMayChangeSignWithinASpanOfWhereTheDataPutIt)

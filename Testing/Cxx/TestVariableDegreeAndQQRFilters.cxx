@@ -534,12 +534,12 @@ TEST(QQRSplineFilter, FlattensTheCurveWhereOnlyTorsionSignsFail)
 
 TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
 {
-  // Two noisy helices (200 points, 0.5% of the radius, 16 a turn): qqr cannot
+  // Two noisy helices (400 points, 0.2% of the radius, 16 a turn): qqr cannot
   // straighten two neighbouring spans where the points turn, and leaves some
   // violations within the automatic mode's bounds; the generalized cubic's
   // tension removes them all. The warning names each line and a failing
   // criterion, and the families that gather each bend at its knot.
-  const auto data = PolylinesData(NoisyHelices(2, 200, 0.005, 2));
+  const auto data = PolylinesData(NoisyHelices(2, 400, 0.002, 1));
   const FilterRun automatic = RunFilter<QQR>(data);
   vtkDataArray* left = CellArray(automatic.Output, "ShapeViolations");
   ASSERT_EQ(left->GetNumberOfTuples(), 2);
