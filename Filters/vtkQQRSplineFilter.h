@@ -25,18 +25,17 @@
  * B-spline curve at the defaults; shape violations are counted against the
  * polygon).
  *
- * With Automatic on (default), the curve is first flattened at the knots
- * of the spans where the shape audit (Costantini and Manni, Definition 1)
- * fails only torsion signs (flattening 1: no curvature
- * at the knot, the joins still C2); where violations remain, the failing
- * spans are moved towards their chords instead, step by step, through the
- * local parameters around them (straightness 1: on the chord, the joins
- * still C2), and the exponent is raised where a straight run of the points
- * ends in a turn, from the unflattened curve and, where violations still
- * remain, from the flattened one; the curve with the fewest violations is
- * kept, within the bounds of the automatic modes (no cusp, no span far from
- * its data); what that cannot remove is reported (two neighbouring spans
- * cannot both be straight where the points turn). Continuity C2_FC
+ * With Automatic on (default), the spans where the shape audit (Costantini
+ * and Manni, Definition 1) fails are moved towards their chords, step by
+ * step, through the local parameters around them (straightness 1: on the
+ * chord, the joins still C2), and the exponent is raised where a straight
+ * run of the points ends in a turn; where violations remain, the curve is
+ * flattened at the knots of the spans that fail only torsion signs
+ * (flattening 1: no curvature at the knot, the joins still C2) and
+ * straightened again from the flattened curve; the curve with the fewest
+ * violations is kept, within the bounds of the automatic modes (no cusp,
+ * no span far from its data); what that cannot remove is reported (two
+ * neighbouring spans cannot both be straight where the points turn). Continuity C2_FC
  * (approximation) sets x = y = 0 and alpha = beta >= FrenetOrder + 3: C2 and
  * Frenet frame continuous to order 2 FrenetOrder + 3 (Theorem 13).
  *
@@ -96,11 +95,11 @@ public:
 
   ///@{
   /**
-   * Flatten the curve at the knots of spans whose torsion sign fails, or
-   * move the spans where the shape audit fails towards their chords (and
-   * raise the exponent where a straight run ends in a turn), within the
-   * automatic modes' bounds (default on); off, Alpha and Beta everywhere
-   * with the local parameters as given.
+   * Move the spans where the shape audit fails towards their chords (and
+   * raise the exponent where a straight run ends in a turn) and, where that
+   * leaves violations, flatten the curve at the knots of spans whose torsion
+   * sign fails, within the automatic modes' bounds (default on); off, Alpha
+   * and Beta everywhere with the local parameters as given.
    */
   vtkSetMacro(Automatic, bool);
   vtkGetMacro(Automatic, bool);

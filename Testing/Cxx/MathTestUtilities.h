@@ -169,6 +169,31 @@ inline std::vector<Vec3> noisyHelixPoints(int count, double perTurn, double nois
   return withNoise(points, noise, seed);
 }
 
+/// The middle value (the upper one of an even count).
+inline double median(std::vector<double> values)
+{
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+/// Median relative curvature error on the middle half of a fit of a helix a = 1, b = 0.25.
+inline double medianCurvatureError(const FittedPolyline& fit)
+{
+  const SampledCurve sampled = sampleFit(fit);
+  const double truth = 1.0 / (1.0 + 0.0625);
+  std::vector<double> errors;
+  const double length = sampled.Samples.Length;
+  for (int k = 0; k < sampled.Samples.size(); ++k)
+  {
+    const double s = sampled.Samples.ArcLength[k];
+    if (s >= 0.25 * length && s <= 0.75 * length)
+    {
+      errors.push_back(std::abs(sampled.Frames[k].Curvature - truth) / truth);
+    }
+  }
+  return median(std::move(errors));
+}
+
 /// count sorted random values in [from, to]: points at random places along a curve.
 inline std::vector<double> randomParameters(int count, double from, double to, unsigned seed)
 {

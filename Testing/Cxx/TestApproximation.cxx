@@ -35,31 +35,6 @@ Vec3 helixAt(double t)
   return Vec3(std::cos(t), std::sin(t), 0.25 * t);
 }
 
-/// The middle value (the upper one of an even count).
-double median(std::vector<double> values)
-{
-  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
-  return values[values.size() / 2];
-}
-
-/// Median relative curvature error on the middle half of a fit of a helix a = 1, b = 0.25.
-double medianCurvatureError(const FittedPolyline& fit)
-{
-  const SampledCurve sampled = sampleFit(fit);
-  const double truth = 1.0 / (1.0 + 0.0625);
-  std::vector<double> errors;
-  const double length = sampled.Samples.Length;
-  for (int k = 0; k < sampled.Samples.size(); ++k)
-  {
-    const double s = sampled.Samples.ArcLength[k];
-    if (s >= 0.25 * length && s <= 0.75 * length)
-    {
-      errors.push_back(std::abs(sampled.Frames[k].Curvature - truth) / truth);
-    }
-  }
-  return median(std::move(errors));
-}
-
 FittedPolyline approximate(const std::vector<Vec3>& points, int knots, bool correct)
 {
   QuinticFitOptions quintic;

@@ -672,27 +672,48 @@ TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
 {
   // Helices with 0.1% noise (two turns of 50 points): the fixed curve's
   // violations are torsion signs where the data barely twist. Moving those
-  // spans towards their chords keeps their torsion's sign (measured: 83 of
-  // 879 left on 40 helices); flattening the curve at their knots mends them
-  // (0 left), within the bounds.
-  int fixedTotal = 0, automaticTotal = 0, flattenedLines = 0;
-  QQROptions fixedOptions;
-  fixedOptions.Automatic = false;
-  for (unsigned seed = 0; seed < 20; ++seed)
+  // spans towards their chords mends most (measured: 83 of 879 left on 40
+  // helices before the audit let the torsion waver where it touches zero);
+  // flattening the curve at their knots mends the others, within the
+  // bounds. Straightening runs first and flattening only where it leaves
+  // violations, since a flattened knot has curvature 0: on helices of the
+  // benchmark's kind (16 points a turn) the curvature's median error over
+  // the middle half stays within four times the fixed curve's (measured
+  // 4.4% against 1.4%; flattening first, 40% on 19 lines of 20 flattened).
+  for (const double perTurn : { 25.0, 16.0 })
   {
-    const std::vector<Vec3> points = noisyHelixPoints(50, 25.0, 0.001, seed);
-    const FittedPolyline fixed = fitPolyline(points, FitOptions{}, qqrBuilder(fixedOptions));
-    const FittedPolyline automatic = fitPolyline(points, FitOptions{}, qqrBuilder(QQROptions{}));
-    fixedTotal += fixed.Audit.violations();
-    automaticTotal += automatic.Audit.violations();
-    EXPECT_TRUE(withinBounds(boundFigures(automatic))) << "seed " << seed;
-    flattenedLines += movedSomewhere(*automatic.Spline, "Flattening");
+    int fixedTotal = 0, automaticTotal = 0, flattenedLines = 0;
+    std::vector<double> fixedErrors, automaticErrors;
+    QQROptions fixedOptions;
+    fixedOptions.Automatic = false;
+    for (unsigned seed = 0; seed < 20; ++seed)
+    {
+      const std::vector<Vec3> points = noisyHelixPoints(50, perTurn, 0.001, seed);
+      const FittedPolyline fixed = fitPolyline(points, FitOptions{}, qqrBuilder(fixedOptions));
+      const FittedPolyline automatic = fitPolyline(points, FitOptions{}, qqrBuilder(QQROptions{}));
+      fixedTotal += fixed.Audit.violations();
+      automaticTotal += automatic.Audit.violations();
+      EXPECT_TRUE(withinBounds(boundFigures(automatic))) << "seed " << seed;
+      flattenedLines += movedSomewhere(*automatic.Spline, "Flattening");
+      fixedErrors.push_back(medianCurvatureError(fixed));
+      automaticErrors.push_back(medianCurvatureError(automatic));
+    }
+    const double fixedError = median(fixedErrors), automaticError = median(automaticErrors);
+    std::printf("qqr on 20 noisy helices, %g points a turn: %d violations fixed, %d automatic; %d "
+                "lines flattened; median curvature error %.4f fixed, %.4f automatic\n",
+      perTurn, fixedTotal, automaticTotal, flattenedLines, fixedError, automaticError);
+    EXPECT_GT(fixedTotal, 200);
+    EXPECT_LE(automaticTotal, 0.02 * fixedTotal);
+    if (perTurn == 25.0)
+    {
+      EXPECT_GT(flattenedLines, 0);
+      EXPECT_LT(flattenedLines, 10);
+    }
+    else
+    {
+      EXPECT_LT(automaticError, 4.0 * fixedError);
+    }
   }
-  std::printf("qqr on 20 noisy helices: %d violations fixed, %d automatic; %d lines flattened\n",
-    fixedTotal, automaticTotal, flattenedLines);
-  EXPECT_GT(fixedTotal, 200);
-  EXPECT_LE(automaticTotal, 0.02 * fixedTotal);
-  EXPECT_GT(flattenedLines, 10);
 }
 
 TEST(AutomaticShape, TheQuinticsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)

@@ -507,29 +507,43 @@ TEST(QQRSplineFilter, CustomXAndYShapeOnlyTheControlPolygonsCurve)
   }
 }
 
-TEST(QQRSplineFilter, FlattensTheCurveWhereOnlyTorsionSignsFail)
+TEST(QQRSplineFilter, FlattensTheCurveOnlyWhereStraighteningLeavesViolations)
 {
-  // Helices with 0.1% noise: the fixed curve fails torsion signs where the
-  // points barely twist; the automatic mode flattens the curve at those
+  // Helices with noise: the fixed curve fails torsion signs where the points
+  // barely twist. Moving spans towards their chords mends them at 0.1% noise,
+  // and then no knot is flattened (a flattened knot has curvature 0); at 0.2%
+  // it leaves some, and the automatic mode flattens the curve at those
   // spans' knots (Flattening, MaxFlattening) and keeps every sign.
-  const auto data = PolylinesData(NoisyHelices(4, 50, 0.001, 11));
-  const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
-  const FilterRun automatic = RunFilter<QQR>(data);
-  const std::vector<IdList> lines = LinesOf(automatic.Output);
-  ASSERT_EQ(lines.size(), 4u);
-  double before = 0.0, after = 0.0;
-  for (vtkIdType c = 0; c < 4; ++c)
+  for (const double noise : { 0.001, 0.002 })
   {
-    before += CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
-    after += CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
-    EXPECT_EQ(CellArray(fixed.Output, "MaxFlattening")->GetTuple1(c), 0.0);
-    EXPECT_LE(MaxAbs(PointArray(automatic.Output, "Flattening"), lines[c]), 1.0);
+    const auto data = PolylinesData(NoisyHelices(4, 50, noise, noise == 0.001 ? 11 : 2));
+    const FilterRun fixed = RunFilter<QQR>(data, [](QQR* f) { f->AutomaticOff(); });
+    const FilterRun automatic = RunFilter<QQR>(data);
+    const std::vector<IdList> lines = LinesOf(automatic.Output);
+    ASSERT_EQ(lines.size(), 4u);
+    double before = 0.0, after = 0.0;
+    for (vtkIdType c = 0; c < 4; ++c)
+    {
+      before += CellArray(fixed.Output, "ShapeViolations")->GetTuple1(c);
+      after += CellArray(automatic.Output, "ShapeViolations")->GetTuple1(c);
+      EXPECT_EQ(CellArray(fixed.Output, "MaxFlattening")->GetTuple1(c), 0.0);
+      EXPECT_LE(MaxAbs(PointArray(automatic.Output, "Flattening"), lines[c]), 1.0);
+    }
+    const std::string helices = "four helices with noise " + std::to_string(noise);
+    Measure(helices + ", qqr: violations fixed", before);
+    Measure(helices + ", qqr: violations automatic", after);
+    EXPECT_GT(before, 20.0);
+    EXPECT_EQ(after, 0.0);
+    const double flattened = CellArray(automatic.Output, "MaxFlattening")->GetRange()[1];
+    if (noise == 0.001)
+    {
+      EXPECT_EQ(flattened, 0.0);
+    }
+    else
+    {
+      EXPECT_GT(flattened, 0.0);
+    }
   }
-  Measure("four helices with 0.1% noise, qqr: violations fixed", before);
-  Measure("four helices with 0.1% noise, qqr: violations automatic", after);
-  EXPECT_GT(before, 20.0);
-  EXPECT_EQ(after, 0.0);
-  EXPECT_GT(CellArray(automatic.Output, "MaxFlattening")->GetRange()[1], 0.0);
 }
 
 TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
