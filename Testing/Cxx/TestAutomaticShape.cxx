@@ -679,7 +679,7 @@ TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
   // violations, since a flattened knot has curvature 0: on helices of the
   // benchmark's kind (16 points a turn) the curvature's median error over
   // the middle half stays within four times the fixed curve's (measured
-  // 4.4% against 1.4%; flattening first, 40% on 19 lines of 20 flattened).
+  // 4.8% against 1.4%; flattening first, 40% on 19 lines of 20 flattened).
   for (const double perTurn : { 25.0, 16.0 })
   {
     int fixedTotal = 0, automaticTotal = 0, flattenedLines = 0;
