@@ -707,7 +707,7 @@ TEST(AutomaticShape, QQRsDefaultModeKeepsTheTorsionSignsOfNoisyHelices)
     if (perTurn == 25.0)
     {
       EXPECT_GT(flattenedLines, 0);
-      EXPECT_LT(flattenedLines, 10);
+      EXPECT_LT(flattenedLines, 15); // measured 9; 20 when flattening ran first
     }
     else
     {
