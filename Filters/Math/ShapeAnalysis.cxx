@@ -17,6 +17,12 @@ namespace
 /// a planar span there.
 constexpr double CoplanarPlaneTurn = 0.1;
 
+/// A segment twisting under this fraction of its neighbours' torsion is
+/// near a zero of the torsion: one it crosses where the neighbours twist
+/// opposite ways (DiscreteShape::TorsionCrossing), one it touches where they
+/// twist its way (ShapeAuditor::twistTolerances).
+constexpr double NearZeroTorsionFraction = 1.0 / 3.0;
+
 double sign(double x)
 {
   return (x > 0) - (x < 0);
@@ -222,7 +228,8 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
         scale = std::max(scale, std::abs(shape.Torsion[k]));
       }
     }
-    if (shape.Coplanar[i] || (twisted[i] && 3.0 * std::abs(shape.Torsion[i]) < scale))
+    if (shape.Coplanar[i] ||
+      (twisted[i] && std::abs(shape.Torsion[i]) < NearZeroTorsionFraction * scale))
     {
       shape.Coplanar[i] = shape.Twisted[i] = 0;
       shape.TorsionCrossing[i] = 1;
@@ -293,7 +300,6 @@ std::vector<double> ShapeAuditor::twistTolerances() const
   std::vector<double> tolerance(std::max(spans, 0), this->Tolerances.Curve);
   constexpr int Reach = 2;
   constexpr double StepFraction = 0.5;
-  constexpr double DipFraction = 1.0 / 3.0;
   auto exists = [&](int k) { return data.Closed || (k >= 0 && k < spans); };
   auto twisting = [&](int k) { return shape.Twisted[k] || shape.TorsionCrossing[k]; };
   // Only where the torsion passes through zero once among the five twisted
@@ -359,7 +365,7 @@ std::vector<double> ShapeAuditor::twistTolerances() const
       continue;
     }
     const double weaker = std::min(std::abs(shape.Torsion[before]), std::abs(shape.Torsion[after]));
-    if (DipFraction * weaker > std::abs(torsion))
+    if (std::abs(torsion) < NearZeroTorsionFraction * weaker)
     {
       const double step = (weaker - std::abs(torsion)) * this->Scale;
       tolerance[j] = std::max(tolerance[j], StepFraction * step);
