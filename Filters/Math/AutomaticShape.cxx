@@ -1136,7 +1136,7 @@ std::optional<AutomaticShape> searchFromCommonLevel(const FitContext& context,
 }
 } // namespace
 
-AutomaticShape preserveShapeAutomatically(
+AutomaticShape searchShape(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
 {
   AutomaticShape found;
@@ -1152,6 +1152,12 @@ AutomaticShape preserveShapeAutomatically(
     found.Spline = ladder.Build(found.Levels);
     found.Audit = context.audit(*found.Spline, reference, ladder.ReferenceNoise);
   }
+  return found;
+}
+
+AutomaticShape improveShape(AutomaticShape found, const FitContext& context,
+  const CleanPolyline& reference, const ShapeLadder& ladder)
+{
   if (ladder.RetrySpanBySpan && found.Audit.violations() > 0)
   {
     try
@@ -1166,7 +1172,7 @@ AutomaticShape preserveShapeAutomatically(
     }
     catch (const SingularSystem&)
     {
-      // As above: the first search's curve stays.
+      // Singular levels (as in searchShape): the first search's curve stays.
     }
   }
   if (ladder.RetryFromCommonLevel && found.Audit.violations() > 0)
@@ -1195,9 +1201,15 @@ AutomaticShape preserveShapeAutomatically(
     }
     catch (const SingularSystem&)
     {
-      // As above: the searches' curve stays.
+      // Singular levels (as in searchShape): the searches' curve stays.
     }
   }
   return found;
+}
+
+AutomaticShape preserveShapeAutomatically(
+  const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder)
+{
+  return improveShape(searchShape(context, reference, ladder), context, reference, ladder);
 }
 } // namespace shapesplines

@@ -82,8 +82,7 @@ struct ShapeLadder
   bool RetryFromCommonLevel = false;
   /// Where the searches leave violations, try each span near one left
   /// failing alone at a few other levels and keep what lowers the violations
-  /// within the bounds (see preserveShapeAutomatically; a Uniform ladder is
-  /// not refined).
+  /// within the bounds (see improveShape; a Uniform ladder is not refined).
   bool Refine = true;
   /// Refining tries a span back at level 0 too. qqr's searches straighten
   /// whole neighbourhoods and overshoot: 448 of the 2748 violations its
@@ -110,7 +109,7 @@ struct ShapeLadder
 constexpr int RetryReach = 32;
 
 /// How many spans on each side of one left failing refining tries (see
-/// preserveShapeAutomatically), how many times over, and its cost: at most
+/// improveShape), how many times over, and its cost: at most
 /// RefineTrialsPerSpan builds a span of the line, and at most
 /// RefinePointBuilds points built in all (each build solves the whole line:
 /// a line of 1e4 points is hardly refined, one of 50 up to 98 builds).
@@ -129,11 +128,11 @@ struct AutomaticShape
 };
 
 /**
- * The automatic mode: builds level 0 and audits it against reference (the
- * spans where it fails a criterion outside ShapeLadder::Mends are left
- * alone); then, round by round, raises each failing span (a span already at
- * the top, or frozen, raises its neighbours instead; a span whose torsion
- * changes sign on it raises its neighbours with it,
+ * The automatic mode's first search: builds level 0 and audits it against
+ * reference (the spans where it fails a criterion outside ShapeLadder::Mends
+ * are left alone); then, round by round, raises each failing span (a span
+ * already at the top, or frozen, raises its neighbours instead; a span whose
+ * torsion changes sign on it raises its neighbours with it,
  * ShapeLadder::RaiseTwistNeighbours) by a step that doubles while it keeps
  * failing, rebuilds, and audits again only the spans within Reach of a
  * change. A raise that pushes a span beyond the bounds (and beyond where it
@@ -146,10 +145,18 @@ struct AutomaticShape
  * the best; a last audit of the whole curve catches the far effects of a global
  * solve (then it goes on), and so does one of the best curve met where the
  * rounds ended on another (then it goes on from the best, once). Returns the
- * best curve met: the fewest violations, among those within the bounds (of a
- * second search, ShapeLadder::RetrySpanBySpan, or a third,
- * ShapeLadder::RetryFromCommonLevel, if it has fewer; both only within
- * RetryReach of the spans left failing). Where violations are left, refines
+ * best curve met: the fewest violations, among those within the bounds; the
+ * fixed parameters' curve where the levels met are singular.
+ * Progress is reported each round (it can abort).
+ */
+AutomaticShape searchShape(
+  const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);
+
+/**
+ * What the ladder does where a first search (searchShape) left violations:
+ * a second search, ShapeLadder::RetrySpanBySpan, or a third,
+ * ShapeLadder::RetryFromCommonLevel, both only within RetryReach of the
+ * spans left failing and kept if they leave fewer; then refining
  * (ShapeLadder::Refine): each span within RefineReach of one left failing
  * (the worst failing first, each followed by its neighbours nearest first:
  * an order the line's direction does not change) is tried alone at levels
@@ -161,9 +168,12 @@ struct AutomaticShape
  * takes the generalized cubic from 17 violations left to 5, the variable
  * degree spline from 7 to 0, the quintic from 84 to 42 and qqr from 94 to
  * 32, mostly by lowering a span to level 0 or 1 (or flattening one more of
- * qqr's knots).
- * Progress is reported each round (it can abort).
+ * qqr's knots). Never returns more violations than found has.
  */
+AutomaticShape improveShape(AutomaticShape found, const FitContext& context,
+  const CleanPolyline& reference, const ShapeLadder& ladder);
+
+/// The automatic mode: searchShape, then improveShape.
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);
 

@@ -999,28 +999,25 @@ CurveBuilder qqrBuilder(const QQROptions& options)
         return std::make_unique<QQRSpline>(QQRSpline::make(options.Construction, data.Points,
           context.Knots, data.Closed, std::vector<double>(n, kappa), local, flat));
       };
-      // Straightening runs first, its search alone (neither retried span by
-      // span nor refined: most of its cost where violations are left, and
-      // on a long line they always are): where it removes every violation
-      // its curve is kept, since a flattened knot has curvature 0 (400
-      // helices of 50 points, 0.1% noise: curvature error over the middle
-      // spans 2.7% straightened, 7.2% with flattening first, the fixed
-      // curve's 1.4%; torsion 0 on half the samples). Where it leaves
-      // violations, the searches run as before: flattening (the local
-      // interpolation takes x and y from (3.18): nothing to flatten with),
-      // straightening refined, and straightening again from the flattened
+      // Straightening runs first, its search alone (searchShape, neither
+      // retried span by span nor refined: most of its cost where violations are
+      // left, and on a long line they always are): where it removes every
+      // violation its curve is kept, since a flattened knot has curvature 0
+      // (400 helices of 50 points, 0.1% noise: curvature error over the middle
+      // spans 2.7% straightened, 7.2% with flattening first, the fixed curve's
+      // 1.4%; torsion 0 on half the samples). Where it leaves violations,
+      // flattening is searched (the local interpolation takes x and y from
+      // (3.18): nothing to flatten with), then the straightening search
+      // improved (improveShape), and straightening again from the flattened
       // curve (its knots kept flat under the spans it straightens: the two
       // agree at a straightened span's knots); the curve with the fewest
       // violations is kept, a tie the straightened one. No start wins
       // everywhere: the users'-data generator over 12 seeds (Math core), 237
       // violations left from the unflattened curve alone, 322 from the
       // flattened one alone, 197 from both.
-      ShapeLadder quick = ladder;
-      quick.Refine = false;
-      quick.RetrySpanBySpan = false;
-      built = fixedOrAutomatic(true, context, data, quick);
+      AutomaticShape straightened = searchShape(context, data, ladder);
       std::vector<double> flattenedKnots;
-      if (built.Audit->violations() > 0 &&
+      if (straightened.Audit.violations() > 0 &&
         options.Construction != QQRConstruction::LocalInterpolation)
       {
         BuiltCurve flattenedCurve = fixedOrAutomatic(true, context, data, flattening);
@@ -1028,18 +1025,19 @@ CurveBuilder qqrBuilder(const QQROptions& options)
         {
           flattenedKnots = flattened->flattening();
         }
-        if (flattenedCurve.Audit->violations() < built.Audit->violations())
+        if (flattenedCurve.Audit->violations() > 0)
+        {
+          straightened = improveShape(std::move(straightened), context, data, ladder);
+        }
+        if (flattenedCurve.Audit->violations() < straightened.Audit.violations())
         {
           built = std::move(flattenedCurve);
         }
-        if (built.Audit->violations() > 0)
-        {
-          BuiltCurve straightened = fixedOrAutomatic(true, context, data, ladder);
-          if (straightened.Audit->violations() <= built.Audit->violations())
-          {
-            built = std::move(straightened);
-          }
-        }
+      }
+      if (!built.Spline)
+      {
+        built.Spline = std::move(straightened.Spline);
+        built.Audit = std::move(straightened.Audit);
       }
       const bool flattenedAny = std::any_of(
         flattenedKnots.begin(), flattenedKnots.end(), [](double f) { return f > 0.0; });
