@@ -52,7 +52,7 @@ std::vector<char> withinReach(const std::vector<char>& marked, int reach, bool c
 }
 
 /**
- * The state of one automatic search (preserveShapeAutomatically): the levels
+ * The state of one automatic search (searchShape, improveShape): the levels
  * per span and what the rounds learnt about each span, the curve of the
  * current levels and its span-by-span audit.
  */

@@ -60,7 +60,7 @@ struct ShapeLadder
   bool Uniform = false;
   /// A span whose torsion sign fails on it raises its neighbours with it
   /// (the solve spreads a third derivative over them; see
-  /// preserveShapeAutomatically). Off where neighbouring raises undo each
+  /// searchShape). Off where neighbouring raises undo each
   /// other (qqr's flattening).
   bool RaiseTwistNeighbours = true;
   /// The criteria the ladder is meant to mend (criterionBit): the spans where
