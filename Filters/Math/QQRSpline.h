@@ -257,13 +257,12 @@ private:
 struct QQROptions
 {
   QQRConstruction Construction = QQRConstruction::Interpolation;
-  /// Flatten the curve at the knots of the spans where the shape audit fails
-  /// only torsion signs (QQRKnotShape::Flattening); where violations
-  /// remain, move the failing spans towards their chords instead
+  /// Move the spans where the shape audit fails towards their chords
   /// (QQRKnotShape::Straightness), raising alpha = beta up to MaxAlpha where
-  /// a straight run of the data ends in a turn (preserveShapeAutomatically
-  /// for each), from the unflattened curve and, where violations still
-  /// remain, from the flattened one; the curve with the fewest violations kept.
+  /// a straight run of the data ends in a turn; where violations remain,
+  /// flatten the curve at the knots of the spans that fail only torsion
+  /// signs (QQRKnotShape::Flattening) and straighten again from there; the
+  /// curve with the fewest violations kept (qqrBuilder).
   bool Automatic = true;
   double Alpha = 4.0, Beta = 4.0, MaxAlpha = 200.0;
   /// NaN: the paper's choice before Figure 5 (cubicLocalParameters). The local
@@ -288,12 +287,12 @@ double qqrTurnExponent(double kappa, double maxAlpha, int level);
  * options (the data as control polygon: its shape reference is then the data
  * polygon), fixed exponents or automatic. The context's PointValues, if any,
  * are the local bias z per point; values outside [0, 1] or NaN take Z's.
- * Automatic: the curve is flattened first at the knots of the spans where the
- * fixed curve breaks only torsion signs; where violations remain, each
- * span that breaks the shape is moved towards its chord instead, level by
- * level, within the bounds of preserveShapeAutomatically (from the
- * unflattened curve, and where violations still remain from the flattened
- * one), and the curve with the fewest violations kept. Moving a span
+ * Automatic: each span that breaks the shape is moved towards its chord,
+ * level by level (searchShape); where violations remain, the curve is
+ * flattened at the knots of the spans where the fixed curve breaks only
+ * torsion signs, the straightening search is improved (improveShape) and
+ * run again from the flattened curve, all within the automatic driver's
+ * bounds, and the curve with the fewest violations kept. Moving a span
  * towards its chord keeps the sign of its torsion. An exponent alone cannot
  * keep the shape: it scales the curvature vector at its knot without
  * turning it, and a large exponent makes a span slow down at its middle

@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <random>
 #include <string>
@@ -176,9 +177,14 @@ struct ToyRun
   std::vector<int> FirstRaise; ///< the levels of the first round's curve
 };
 
-CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
+/// What a toy builder runs: the whole automatic mode, or a part of it.
+using AutomaticDriver =
+  std::function<AutomaticShape(const FitContext&, const CleanPolyline&, const ShapeLadder&)>;
+
+CurveBuilder toyBuilder(
+  ToyRun& run, const Toy& toy = {}, AutomaticDriver driver = preserveShapeAutomatically)
 {
-  return [&run, toy](const FitContext& context) {
+  return [&run, toy, driver](const FitContext& context) {
     ShapeLadder ladder;
     ladder.TopLevel = 2;
     ladder.Uniform = toy.Uniform;
@@ -201,13 +207,29 @@ CurveBuilder toyBuilder(ToyRun& run, const Toy& toy = {})
     options.Progress = toy.Progress;
     const FitContext withProgress{ context.Data, context.Knots, options, context.CoordinateNoise,
       context.PointValues };
-    AutomaticShape found = preserveShapeAutomatically(withProgress, context.Data, ladder);
+    AutomaticShape found = driver(withProgress, context.Data, ladder);
     run.Levels = found.Levels;
     BuiltCurve built;
     built.Spline = std::move(found.Spline);
     built.Audit = std::move(found.Audit);
     return built;
   };
+}
+
+/// A straight run of 100 points, then the Akima data: the cubic fails only
+/// in and near the Akima part.
+std::vector<Vec3> straightRunThenAkima()
+{
+  std::vector<Vec3> points;
+  for (int i = -100; i < 0; ++i)
+  {
+    points.emplace_back(i, 10.0, 0.0);
+  }
+  for (const Vec3& p : akima())
+  {
+    points.push_back(p);
+  }
+  return points;
 }
 } // namespace
 
@@ -404,15 +426,7 @@ TEST(AutomaticShape, SearchesAgainOnlyAroundWhatTheFirstSearchLeftFailing)
   // in and near the Akima part. The first search keeps the cubic (one step
   // up detours beyond the bounds); the retry from the common level searches
   // only within RetryReach spans of the failing ones: the run's far spans keep level 0.
-  std::vector<Vec3> points;
-  for (int i = -100; i < 0; ++i)
-  {
-    points.emplace_back(i, 10.0, 0.0);
-  }
-  for (const Vec3& p : akima())
-  {
-    points.push_back(p);
-  }
+  const std::vector<Vec3> points = straightRunThenAkima();
   const FittedPolyline cubic = fitPolyline(points, FitOptions{}, cubicBuilder());
   ASSERT_GT(cubic.Audit.violations(), 0);
   const int spans = static_cast<int>(cubic.Audit.SpanMask.size());
@@ -430,6 +444,56 @@ TEST(AutomaticShape, SearchesAgainOnlyAroundWhatTheFirstSearchLeftFailing)
   {
     EXPECT_EQ(run.Levels[j], j < firstFailing - RetryReach ? 0 : 2) << "span " << j;
   }
+}
+
+TEST(AutomaticShape, ImprovingAFirstSearchDoesWhatTheWholeModeDoesAfterIt)
+{
+  // Where one step up detours beyond the bounds, the first search alone
+  // keeps the cubic's violations; improving its curve (the retry from the
+  // common level) mends them as the whole mode does, with the same levels,
+  // building only what the whole mode builds after its first search.
+  const std::vector<Vec3> points = straightRunThenAkima();
+  Toy detour;
+  detour.Detour = 5.0;
+  detour.RetryFromCommonLevel = true;
+  ToyRun first;
+  const FittedPolyline searched =
+    fitPolyline(points, FitOptions{}, toyBuilder(first, detour, searchShape));
+  const FittedPolyline cubic = fitPolyline(points, FitOptions{}, cubicBuilder());
+  EXPECT_EQ(searched.Audit.violations(), cubic.Audit.violations());
+  ASSERT_GT(searched.Audit.violations(), 0);
+  ToyRun whole;
+  const FittedPolyline mended = fitPolyline(points, FitOptions{}, toyBuilder(whole, detour));
+  EXPECT_TRUE(mended.Audit.preserving());
+  ToyRun stages;
+  int buildsBeforeImproving = -1;
+  auto improveFirstSearch = [&](const FitContext& context, const CleanPolyline& reference,
+                              const ShapeLadder& ladder) {
+    AutomaticShape found = searchShape(context, reference, ladder);
+    buildsBeforeImproving = stages.Builds;
+    return improveShape(std::move(found), context, reference, ladder);
+  };
+  const FittedPolyline improved =
+    fitPolyline(points, FitOptions{}, toyBuilder(stages, detour, improveFirstSearch));
+  EXPECT_TRUE(improved.Audit.preserving());
+  EXPECT_EQ(stages.Levels, whole.Levels);
+  EXPECT_EQ(buildsBeforeImproving, first.Builds);
+  EXPECT_GT(stages.Builds, first.Builds);
+  EXPECT_EQ(stages.Builds, whole.Builds);
+
+  // A curve without violations is returned as it is: nothing is built.
+  int buildsOfMendedCurve = -1;
+  ToyRun again;
+  auto improveTwice = [&](const FitContext& context, const CleanPolyline& reference,
+                        const ShapeLadder& ladder) {
+    AutomaticShape found =
+      improveShape(searchShape(context, reference, ladder), context, reference, ladder);
+    buildsOfMendedCurve = again.Builds;
+    return improveShape(std::move(found), context, reference, ladder);
+  };
+  fitPolyline(points, FitOptions{}, toyBuilder(again, detour, improveTwice));
+  EXPECT_EQ(again.Builds, buildsOfMendedCurve);
+  EXPECT_EQ(again.Levels, whole.Levels);
 }
 
 TEST(AutomaticShape, KeepsTheBestCurveMetAndStopsRaisingWhatDoesNotHelp)
