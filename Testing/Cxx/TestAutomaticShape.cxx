@@ -1380,6 +1380,65 @@ std::vector<double> helixSpanCurvatureErrors(const FittedPolyline& fit, int perT
 }
 } // namespace
 
+TEST(AutomaticShape, TheTensionFamiliesKeepStaircasesTurningAnyWayIn3D)
+{
+  // Straight runs of 2-5 points (each run its own spacing) joined by turns
+  // of 20 to 160 degrees in random 3D directions, not only the axes' 90:
+  // the generalized cubic and the variable degree spline keep every
+  // criterion, within the bounds for straight runs. (qqr keeps most of the
+  // 90-degree ones only: a straightened qqr span keeps a little curvature
+  // along its length, and sharper turns take more; see design.md.)
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  std::normal_distribution<double> gauss;
+  auto randomUnit = [&] {
+    const Vec3 v(gauss(random), gauss(random), gauss(random));
+    return Vec3(v.normalized());
+  };
+  std::vector<std::vector<Vec3>> lines;
+  for (int line = 0; line < 30; ++line)
+  {
+    std::vector<Vec3> points = { Vec3::Zero() };
+    Vec3 direction = randomUnit();
+    const int runs = 3 + static_cast<int>(random() % 4);
+    for (int run = 0; run < runs; ++run)
+    {
+      if (run > 0)
+      {
+        const double turn = (20.0 + 140.0 * uniform(random)) * M_PI / 180.0;
+        const Vec3 side = direction.cross(randomUnit()).normalized();
+        direction = std::cos(turn) * direction + std::sin(turn) * side;
+      }
+      const int steps = 2 + static_cast<int>(random() % 4);
+      const double step = (0.5 + 1.5 * uniform(random)) / steps;
+      for (int k = 0; k < steps; ++k)
+      {
+        points.push_back(points.back() + step * direction);
+      }
+    }
+    lines.push_back(points);
+  }
+  for (const Family& family : families())
+  {
+    const std::string name = family.Name;
+    if (!family.AlwaysPreserves)
+    {
+      continue;
+    }
+    int fixedViolations = 0;
+    for (size_t k = 0; k < lines.size(); ++k)
+    {
+      fixedViolations += fitPolyline(lines[k], FitOptions{}, family.Fixed).Audit.violations();
+      const FittedPolyline fit = fitPolyline(lines[k], FitOptions{}, family.Automatic);
+      EXPECT_EQ(fit.Audit.violations(), 0) << name << ", line " << k;
+      const BoundFigures bounds = boundFigures(fit);
+      EXPECT_LE(bounds.Curvature, 1e4) << name << ", line " << k;
+      EXPECT_GE(bounds.Speed, 1e-3) << name << ", line " << k;
+    }
+    EXPECT_GT(fixedViolations, 100) << name; // the fixed curves do break the shape
+  }
+}
+
 TEST(AutomaticShape, EveryFamilysDefaultModeConvergesNextToStraightRuns)
 {
   // Straight runs into a helix: the fixed curves bend the runs (collinearity
