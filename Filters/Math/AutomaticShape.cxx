@@ -966,19 +966,24 @@ int stepsToCap(double start, const std::function<double(double)>& raise)
   return steps;
 }
 
-BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
-  const CleanPolyline& reference, const ShapeLadder& ladder)
+BuiltCurve builtCurve(AutomaticShape found)
 {
   BuiltCurve built;
-  if (!automatic)
-  {
-    built.Spline = ladder.Build(std::vector<int>(reference.numberOfSpans(), 0));
-    return built;
-  }
-  AutomaticShape found = preserveShapeAutomatically(context, reference, ladder);
   built.Spline = std::move(found.Spline);
   built.Audit = std::move(found.Audit);
   return built;
+}
+
+BuiltCurve fixedOrAutomatic(bool automatic, const FitContext& context,
+  const CleanPolyline& reference, const ShapeLadder& ladder)
+{
+  if (!automatic)
+  {
+    BuiltCurve built;
+    built.Spline = ladder.Build(std::vector<int>(reference.numberOfSpans(), 0));
+    return built;
+  }
+  return builtCurve(preserveShapeAutomatically(context, reference, ladder));
 }
 
 namespace

@@ -177,6 +177,9 @@ AutomaticShape improveShape(AutomaticShape found, const FitContext& context,
 AutomaticShape preserveShapeAutomatically(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);
 
+/// A found shape as a family's builder returns it: its curve and its audit.
+BuiltCurve builtCurve(AutomaticShape found);
+
 /**
  * What a family's builder returns: the ladder's level 0 as it is (automatic
  * false), or preserveShapeAutomatically()'s curve with its audit.

@@ -1015,30 +1015,26 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       // everywhere: the users'-data generator over 12 seeds (Math core), 237
       // violations left from the unflattened curve alone, 322 from the
       // flattened one alone, 197 from both.
-      AutomaticShape straightened = searchShape(context, data, ladder);
+      AutomaticShape kept = searchShape(context, data, ladder);
       std::vector<double> flattenedKnots;
-      if (straightened.Audit.violations() > 0 &&
+      if (kept.Audit.violations() > 0 &&
         options.Construction != QQRConstruction::LocalInterpolation)
       {
-        BuiltCurve flattenedCurve = fixedOrAutomatic(true, context, data, flattening);
-        if (const auto* flattened = dynamic_cast<const QQRSpline*>(flattenedCurve.Spline.get()))
+        AutomaticShape flattened = preserveShapeAutomatically(context, data, flattening);
+        if (const auto* curve = dynamic_cast<const QQRSpline*>(flattened.Spline.get()))
         {
-          flattenedKnots = flattened->flattening();
+          flattenedKnots = curve->flattening();
         }
-        if (flattenedCurve.Audit->violations() > 0)
+        if (flattened.Audit.violations() > 0)
         {
-          straightened = improveShape(std::move(straightened), context, data, ladder);
+          kept = improveShape(std::move(kept), context, data, ladder);
         }
-        if (flattenedCurve.Audit->violations() < straightened.Audit.violations())
+        if (flattened.Audit.violations() < kept.Audit.violations())
         {
-          built = std::move(flattenedCurve);
+          kept = std::move(flattened);
         }
       }
-      if (!built.Spline)
-      {
-        built.Spline = std::move(straightened.Spline);
-        built.Audit = std::move(straightened.Audit);
-      }
+      built = builtCurve(std::move(kept));
       const bool flattenedAny = std::any_of(
         flattenedKnots.begin(), flattenedKnots.end(), [](double f) { return f > 0.0; });
       if (flattenedAny && built.Audit->violations() > 0)

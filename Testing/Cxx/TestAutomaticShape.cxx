@@ -209,10 +209,7 @@ CurveBuilder toyBuilder(
       context.PointValues };
     AutomaticShape found = driver(withProgress, context.Data, ladder);
     run.Levels = found.Levels;
-    BuiltCurve built;
-    built.Spline = std::move(found.Spline);
-    built.Audit = std::move(found.Audit);
-    return built;
+    return builtCurve(std::move(found));
   };
 }
 
@@ -1405,7 +1402,7 @@ TEST(AutomaticShape, TheTensionFamiliesKeepStaircasesTurningAnyWayIn3D)
     {
       if (run > 0)
       {
-        const double turn = (20.0 + 140.0 * uniform(random)) * M_PI / 180.0;
+        const double turn = (20.0 + 140.0 * uniform(random)) * Pi / 180.0;
         const Vec3 side = direction.cross(randomUnit()).normalized();
         direction = std::cos(turn) * direction + std::sin(turn) * side;
       }
