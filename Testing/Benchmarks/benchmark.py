@@ -48,11 +48,12 @@ def helix_lines(lines, points_per_line, points_per_turn=8.0, seed=1, noise=0.0):
 
 
 def to_polydata(xyz):
-    lines, n, _ = xyz.shape
+    """A polyline per line of xyz: an (lines, n, 3) array or a list of (n_i, 3) ones."""
+    lengths = [len(line) for line in xyz]
     points = vtkPoints()
-    points.SetData(numpy_to_vtk(xyz.reshape(-1, 3).copy(), deep=True))
-    offsets = numpy_to_vtkIdTypeArray(np.arange(0, lines * n + 1, n, dtype=np.int64), deep=True)
-    connectivity = numpy_to_vtkIdTypeArray(np.arange(lines * n, dtype=np.int64), deep=True)
+    points.SetData(numpy_to_vtk(np.concatenate(list(xyz)).astype(float), deep=True))
+    offsets = numpy_to_vtkIdTypeArray(np.concatenate([[0], np.cumsum(lengths)]).astype(np.int64), deep=True)
+    connectivity = numpy_to_vtkIdTypeArray(np.arange(sum(lengths), dtype=np.int64), deep=True)
     cells = vtkCellArray()
     cells.SetData(offsets, connectivity)
     poly = vtkPolyData()
@@ -455,6 +456,69 @@ def shape_on_users_data(seed=7):
           "over the data's largest discrete curvature)")
 
 
+def noise_sweep_lines(rng):
+    """Lines no default was tuned on (kind, lines): helices of 2-5 turns,
+    trefoils and random 3D polylines (steps of unit variance), each of 25,
+    50, 100 and 200 points with noise of 0.1%, 0.5% and 1% of its bounding
+    box diagonal, 10 lines of each, rotated at random; and 60 staircases of
+    3-6 straight runs of 2-5 points (each run its own spacing) turning by
+    20-160 degrees in random 3D directions."""
+    def rotated(xyz):
+        q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
+        return xyz @ q.T
+
+    sets = {"helix": [], "trefoil": [], "random 3D": []}
+    for count in (25, 50, 100, 200):
+        for noise in (0.001, 0.005, 0.01):
+            for _ in range(10):
+                t = np.linspace(0, 2 * np.pi * rng.uniform(2, 5), count)
+                helix = np.column_stack([np.cos(t), np.sin(t), 0.25 * t])
+                t = np.linspace(0, 2 * np.pi, count, endpoint=False)
+                trefoil = np.column_stack([np.sin(t) + 2 * np.sin(2 * t), np.cos(t) - 2 * np.cos(2 * t),
+                                           -np.sin(3 * t)])
+                walk = np.cumsum(rng.normal(size=(count, 3)), axis=0)
+                for kind, xyz in (("helix", helix), ("trefoil", trefoil), ("random 3D", walk)):
+                    diagonal = np.linalg.norm(xyz.max(0) - xyz.min(0))
+                    sets[kind].append(rotated(xyz + rng.normal(0, noise * diagonal, xyz.shape)))
+    stairs = []
+    for _ in range(60):
+        points, direction = [np.zeros(3)], rng.normal(size=3)
+        direction /= np.linalg.norm(direction)
+        for run in range(int(rng.integers(3, 7))):
+            if run:
+                turn = np.radians(rng.uniform(20, 160))
+                side = np.cross(direction, rng.normal(size=3))
+                direction = np.cos(turn) * direction + np.sin(turn) * side / np.linalg.norm(side)
+            steps = int(rng.integers(2, 6))
+            step = rng.uniform(0.5, 2.0) / steps
+            points += [points[-1] + step * (k + 1) * direction for k in range(steps)]
+        stairs.append(np.array(points))
+    sets["staircase 3D"] = stairs
+    return sets
+
+
+def shape_on_a_noise_sweep(seed=41):
+    """Every family's default mode against its fixed mode on noise_sweep_lines:
+    ShapeViolations summed per kind, how many lines keep any, the largest
+    curvature against the data's and the cost (all lines of a kind in one
+    input, 2 threads)."""
+    sets = noise_sweep_lines(np.random.default_rng(seed))
+    print("\nShape on a sweep of noisy lines (25-200 points, 0.1-1% noise of the diagonal, 10 lines each) and "
+          "staircases turning 20-160 degrees in 3D, every family's default mode against its fixed mode:")
+    print("%-9s %-13s %7s %22s %13s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
+                                                 "lines left", "curvature / data's", "cost"))
+    for family, proxy, automatic in FAMILIES[1:]:
+        for kind, lines in sets.items():
+            poly = to_polydata(lines)
+            figures = fixed_and_automatic(proxy, automatic, poly, 1)
+            output, _ = fitted(proxy, poly)
+            left = int((cell_array(output, "ShapeViolations") > 0).sum())
+            ratio = max(k / discrete_curvature(xyz) for k, xyz in zip(line_curvatures(output), lines))
+            print("%-9s %-13s %7d %22s %13d %20.3g %7.1fx" % (
+                family, kind, len(lines), "%d / %d" % (figures["fixed violations"], figures["auto violations"]),
+                left, ratio, figures["auto"] / figures["fixed"]))
+
+
 def helix_between_straight_runs(per_turn):
     """Two turns of the helix (cos t, sin t, t / 4), per_turn points a turn,
     entered and left along its tangent by straight runs of one turn's length
@@ -803,6 +867,7 @@ def main():
     if args.shape_only:
         automatic_cost()
         shape_on_users_data()
+        shape_on_a_noise_sweep()
         straight_runs_into_a_curve()
         exact_curves_sampled_evenly()
         noisy_unevenly_spaced()
@@ -840,6 +905,7 @@ def main():
         return
     automatic_cost()
     shape_on_users_data()
+    shape_on_a_noise_sweep()
     straight_runs_into_a_curve()
     exact_curves_sampled_evenly()
     noisy_unevenly_spaced()
