@@ -159,16 +159,19 @@ AutomaticShape searchShape(
  * spans left failing and kept if they leave fewer; then refining
  * (ShapeLadder::Refine): each span within RefineReach of one left failing
  * (the worst failing first, each followed by its neighbours nearest first:
- * an order the line's direction does not change) is tried alone at levels
- * 0 and 1 and at a quarter, half and all of the top, rebuilt and audited
- * around it, and the change kept where it lowers the violations within the
- * bounds; the refined curve, audited whole, is kept if it has fewer. The
- * searches raise a neighbourhood together, overshoot, and freeze a span
- * whose raise stalls: on 100 random 3D polylines of 60 points refining
- * takes the generalized cubic from 17 violations left to 5, the variable
- * degree spline from 7 to 0, the quintic from 84 to 42 and qqr from 94 to
- * 32, mostly by lowering a span to level 0 or 1 (or flattening one more of
- * qqr's knots). Never returns more violations than found has.
+ * an order the line's direction does not change; a span is passed over
+ * once a trial kept has mended every span that near it) is tried alone at
+ * levels 0 and 1 and at a quarter, half and all of the top, rebuilt and
+ * audited around it (first the spans failing before, and only if those
+ * lose failures, the rest), and the change kept where it lowers the
+ * violations within the bounds; the refined curve, audited whole, is kept
+ * if it has fewer. The searches raise a neighbourhood together, overshoot,
+ * and freeze a span whose raise stalls: on 100 random 3D polylines of 60
+ * points refining takes the generalized cubic from 17 violations left to
+ * 5, the variable degree spline from 7 to 0, the quintic from 84 to 42 and
+ * qqr from 94 to 32, mostly by lowering a span to level 0 or 1 (or
+ * flattening one more of qqr's knots). Never returns more violations than
+ * found has.
  */
 AutomaticShape improveShape(AutomaticShape found, const FitContext& context,
   const CleanPolyline& reference, const ShapeLadder& ladder);

@@ -357,6 +357,14 @@ ShapeAudit CurveAuditor::result() const
   return audit;
 }
 
+void CurveAuditor::forget(int span)
+{
+  this->Auditor.forget(span);
+  this->Curvature[span] = 0.0;
+  this->Speed[span] = 1.0;
+  this->Deviation[span] = 0.0;
+}
+
 void CurveAuditor::auditAll(const Curve& curve, const ProgressCallback& progress)
 {
   const int spans = curve.numberOfSpans();

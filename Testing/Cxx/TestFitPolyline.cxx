@@ -87,3 +87,45 @@ TEST(CurveAuditor, FindsANearCuspBetweenItsSamples)
   const double chordSpeed = reference.segment(0).norm();
   EXPECT_NEAR(auditor.lowestSpeed(0) * chordSpeed, e, 1e-3 * e);
 }
+
+TEST(CurveAuditor, ForgettingASpanDropsWhatItFoundUntilItIsAuditedAgain)
+{
+  // The automatic modes' refining leaves the spans a trial cannot mend
+  // without findings, to count the trial's violations from below.
+  const CleanPolyline reference = cleanPolyline(
+    { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(4, 1, 0), Vec3(4.5, 3, 0) },
+    false);
+  const DiscreteShape shape = discreteShape(reference);
+  const std::vector<double> knots = computeKnots(reference, Parameterization::ChordLength);
+  const CubicSpline cubic = CubicSpline::interpolate(reference.Points, knots, false);
+  CurveAuditor auditor(reference, shape, ShapeTolerances{}, 16, 0.0, AuditFigures::Bounds);
+  auditor.auditAll(cubic);
+  const ShapeAudit whole = auditor.result();
+  ASSERT_GT(whole.violations(), 0); // the cubic overshoots where the straight run meets the turn
+  const int spans = reference.numberOfSpans();
+  for (int j = 0; j < spans; ++j)
+  {
+    if (whole.SpanMask[j] == 0)
+    {
+      continue;
+    }
+    auditor.forget(j);
+    // A failure at a knot is found from both its spans: it may stay.
+    EXPECT_LE(auditor.result().violations(), whole.violations()) << j;
+    EXPECT_EQ(auditor.largestCurvature(j), 0.0) << j;
+    EXPECT_EQ(auditor.largestDeviation(j), 0.0) << j;
+    auditor.audit(cubic, j);
+    const ShapeAudit again = auditor.result();
+    EXPECT_EQ(again.violations(), whole.violations()) << j;
+    EXPECT_EQ(again.SpanMask, whole.SpanMask) << j;
+  }
+  int previous = whole.violations();
+  for (int j = 0; j < spans; ++j)
+  {
+    auditor.forget(j);
+    const int now = auditor.result().violations();
+    EXPECT_LE(now, previous) << j;
+    previous = now;
+  }
+  EXPECT_EQ(previous, 0);
+}
