@@ -289,9 +289,9 @@ public:
           }
           restoreOutside(moved);
           // Only the spans failing on the kept curve can lose a violation:
-          // audited first, the others left without findings, the count is
-          // at most the trial's, and most trials end there (87-90% of
-          // qqr's and the quintic's on noisy helices).
+          // they are audited first, the others left without findings, which
+          // counts the trial's violations from below; most trials end there
+          // (87-90% of qqr's and the quintic's on noisy helices).
           for (const int k : moved)
           {
             if (failing[k])
