@@ -76,10 +76,15 @@ public:
 
   ///@{
   /**
-   * Knots of the approximation: 0 (default) lets generalized cross-validation
-   * choose them per line from the data, balancing bias against noise (Craven
-   * and Wahba); otherwise this many (1 counts as 2). Either way at
-   * most half the points.
+   * Knots of the approximation (1 counts as 2), or 0 (default): chosen per
+   * line from the data by generalized cross-validation (Craven and Wahba) on
+   * parameters corrected towards the curve, the fewest within half a
+   * standard error of the best score (CorrectParameters); lines that this
+   * smooths are planned again on parameters weighted by a first fit's
+   * curvature, and the better-scoring plan kept (the one with fewer knots
+   * where both score within half a standard error of the better's best).
+   * Either way at most half the points. The cell arrays NumberOfKnots and
+   * NoiseLevel report what each line got.
    */
   vtkSetClampMacro(NumberOfKnots, int, 0, 1000000);
   vtkGetMacro(NumberOfKnots, int);
