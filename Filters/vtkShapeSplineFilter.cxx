@@ -278,9 +278,10 @@ std::pair<int, double> DataInterval(
  * Progress by lines done, weighted by their points, and inside a long line by
  * the math core's ProgressCallback. Reported by publish() on the thread that
  * runs RequestData only (VTK's events and ParaView's progress bar are not
- * thread-safe), at most once per 1% of the phase [From, To], never
- * backwards: as the lines are done with the Sequential backend (they run on
- * this thread), every 50 ms with a threaded one (WhilePublishing).
+ * thread-safe), once per 1% of the phase [From, To] and at least once per
+ * Heartbeat (the same value again), never backwards: as the lines are done
+ * with the Sequential backend (they run on this thread), every 50 ms with a
+ * threaded one (WhilePublishing).
  */
 class LineProgress
 {
@@ -317,12 +318,20 @@ public:
   {
     const double done = std::max(static_cast<double>(this->Done), this->Partial.load());
     const double fraction = this->Total > 0 ? std::min(done / this->Total, 1.0) : 1.0;
-    if (fraction - this->Reported >= 0.01 && !this->Algorithm->GetAbortExecute())
+    const auto now = std::chrono::steady_clock::now();
+    // A long line's automatic search can hold its fraction for seconds (a
+    // noisy 1e5-point line: 7-10 s without an event); ParaView's progress bar
+    // and its Cancel act from the events, so they keep coming.
+    const bool moved = fraction - this->Reported >= 0.01;
+    if ((moved || now - this->LastEvent >= Heartbeat) && !this->Algorithm->GetAbortExecute())
     {
-      this->Reported = fraction;
-      this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * fraction);
+      this->Reported = std::max(this->Reported, fraction);
+      this->LastEvent = now;
+      this->Algorithm->UpdateProgress(this->From + (this->To - this->From) * this->Reported);
     }
   }
+
+  static constexpr std::chrono::milliseconds Heartbeat{ 250 };
 
 private:
   vtkAlgorithm* Algorithm;
@@ -330,7 +339,8 @@ private:
   vtkIdType Total;
   std::atomic<vtkIdType> Done{ 0 };
   std::atomic<double> Partial{ 0.0 };
-  double Reported = 0.0; ///< only read and written by publish()
+  double Reported = 0.0; ///< only read and written by publish(), as LastEvent
+  std::chrono::steady_clock::time_point LastEvent = std::chrono::steady_clock::now();
 
 public:
   /// The Sequential backend runs the lines on this thread: it publishes as it goes.

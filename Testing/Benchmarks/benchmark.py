@@ -353,7 +353,8 @@ def automatic_cost_on_long_lines(sizes=(10000, 100000)):
     automatic search solves the whole line again."""
     rng = np.random.default_rng(11)
     print("\nAutomatic against fixed on one long noisy helix (16 points per turn, 0.3% noise):")
-    print("%-9s %8s %11s %11s %9s %22s" % ("family", "points", "fixed s", "auto s", "cost", "violations fixed/auto"))
+    print("%-9s %8s %11s %11s %9s %22s %18s" % ("family", "points", "fixed s", "auto s", "cost", "violations fixed/auto",
+                                              "longest event gap"))
     for n in sizes:
         t = 2 * np.pi * np.arange(n) / 16
         xyz = np.column_stack([np.cos(t), np.sin(t), 0.05 * t]) + rng.normal(0, 0.003, (n, 3))
@@ -363,9 +364,26 @@ def automatic_cost_on_long_lines(sizes=(10000, 100000)):
             for mode, properties in (("fixed", {automatic: 0}), ("auto", {})):
                 output, figures[mode] = fitted(proxy, poly, **properties)
                 figures[mode + " violations"] = int(cell_array(output, "ShapeViolations").sum())
-            print("%-9s %8d %11.3f %11.3f %8.1fx %22s" % (
+            print("%-9s %8d %11.3f %11.3f %8.1fx %22s %16.2fs" % (
                 family, n, figures["fixed"], figures["auto"], figures["auto"] / figures["fixed"],
-                "%d / %d" % (figures["fixed violations"], figures["auto violations"])))
+                "%d / %d" % (figures["fixed violations"], figures["auto violations"]),
+                longest_progress_gap(proxy, poly)))
+    print("(longest event gap: the longest wait between progress events of the default mode's run, another run; "
+          "ParaView's progress bar and its Cancel act from these events)")
+
+
+def longest_progress_gap(proxy, poly):
+    """Seconds of the longest wait between two progress events (or the run's
+    start or end) of the family's default mode on poly, 2 threads."""
+    algorithm = getattr(simple, proxy)(Input=simple.Line(), **threads("STDThread")).GetClientSideObject()
+    algorithm.SetInputDataObject(0, poly)
+    stamps = []
+    observer = algorithm.AddObserver("ProgressEvent", lambda caller, event: stamps.append(time.perf_counter()))
+    start = time.perf_counter()
+    algorithm.Update()
+    end = time.perf_counter()
+    algorithm.RemoveObserver(observer)
+    return np.diff([start] + stamps + [end]).max()
 
 
 def users_data(rng):

@@ -1091,6 +1091,43 @@ TEST(Progress, ThreadedRunsReportOnTheCallingThreadAndStopWhenAsked)
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
 
+TEST(Progress, EventsKeepComingWhileALongLinesSearchHoldsItsFraction)
+{
+  // The quintic's automatic search on a noisy line of 1e5 points holds the
+  // line's fraction for seconds (its refining reports from 0 again): events
+  // repeat the value a few times a second, and ParaView's Cancel, which acts
+  // from an event, stops the fit there. Before events repeated, none came for
+  // 7 s and the fit ran to its end.
+  const auto input = PolylinesData(NoisyHelices(1, 100000, 0.003, 5));
+  vtkNew<vtkTensionQuinticSplineFilter> filter;
+  filter->SetInputData(input);
+  struct Watch
+  {
+    std::vector<double> Values;
+    bool Aborted = false;
+  } watch;
+  vtkNew<vtkCallbackCommand> observer;
+  observer->SetClientData(&watch);
+  observer->SetCallback([](vtkObject* caller, unsigned long, void* clientData, void* callData) {
+    auto* w = static_cast<Watch*>(clientData);
+    const double value = *static_cast<double*>(callData);
+    const auto& v = w->Values;
+    const bool held = v.size() >= 2 && v.end()[-1] == value && v.end()[-2] == value;
+    w->Values.push_back(value);
+    if (held && value > 0.0 && value < 0.8 && !w->Aborted)
+    {
+      w->Aborted = true; // the third event in a row at one value, while fitting
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, observer);
+  filter->Update();
+  EXPECT_TRUE(watch.Aborted) << "no event repeated a held fraction: " << watch.Values.size()
+                             << " events";
+  EXPECT_TRUE(std::is_sorted(watch.Values.begin(), watch.Values.end()));
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+}
+
 TEST(Progress, MovesWithTheLinesAndAbortLeavesAnEmptyOutput)
 {
   const auto input = RandomLines(400);
