@@ -260,8 +260,8 @@ public:
       const int violationsBefore = violations;
       for (size_t t = 0; t < order.size() && violations > 0 && trials > 0; ++t)
       {
-        reportProgress(this->Context.Options.Progress, static_cast<int>(t), 64,
-          static_cast<double>(t) / order.size());
+        const double passDone = (pass + static_cast<double>(t) / order.size()) / RefinePasses;
+        this->progressAt(static_cast<int>(t), 64, SearchShare + (1.0 - SearchShare) * passDone);
         const int j = order[t];
         std::vector<char> marked(this->Spans, 0);
         marked[j] = 1;
@@ -394,11 +394,10 @@ private:
   /// Rounds of raises from round on, until the search stops; the round it stopped at.
   int searchRounds(int round)
   {
-    const ProgressCallback& progress = this->Context.Options.Progress;
     int roundsWithoutBetter = 0;
     for (; round <= this->Ladder.MaxRounds && roundsWithoutBetter < MostRoundsWithoutBetter; ++round)
     {
-      reportProgress(progress, round, 1, static_cast<double>(round) / this->Ladder.MaxRounds);
+      this->progressAt(round, 1, SearchShare * round / this->Ladder.MaxRounds);
       const std::vector<char> raise = this->chooseRaises();
       if (std::none_of(raise.begin(), raise.end(), [](char r) { return r; }))
       {
@@ -732,7 +731,9 @@ private:
   {
     for (int j = 0; j < this->Spans; ++j)
     {
-      reportProgress(this->Context.Options.Progress, j, 1024, static_cast<double>(j) / this->Spans);
+      // A whole audit only checks for an abort: the line's fraction stays where
+      // the rounds or trials put it (it had run ahead to the end on the first).
+      reportProgress(this->Context.Options.Progress, j, 1024, this->Done);
       if (this->Stale[j])
       {
         this->Auditor.audit(*this->Curve, j);
@@ -740,6 +741,13 @@ private:
     }
     std::fill(this->Stale.begin(), this->Stale.end(), 0);
     this->Audit = this->Auditor.result();
+  }
+
+  /// Reports the line's progress at fraction (it can abort).
+  void progressAt(long step, long every, double fraction)
+  {
+    this->Done = fraction;
+    reportProgress(this->Context.Options.Progress, step, every, fraction);
   }
 
   /// The curve of the current levels, audited whole.
@@ -954,6 +962,10 @@ private:
   int StartViolations = 0;
   std::vector<std::vector<double>> StartCurvatures; ///< per span, of level 0 (CurvatureChange)
   std::vector<Figures> LevelZero; ///< see levelZeroFigures
+  /// The line's fraction last reported: a search's rounds the first
+  /// SearchShare of it, refining the rest (a search that ends early jumps).
+  double Done = 0.0;
+  static constexpr double SearchShare = 0.5;
 };
 } // namespace
 

@@ -147,7 +147,8 @@ struct AutomaticShape
  * rounds ended on another (then it goes on from the best, once). Returns the
  * best curve met: the fewest violations, among those within the bounds; the
  * fixed parameters' curve where the levels met are singular.
- * Progress is reported each round (it can abort).
+ * Progress is reported each round (it can abort), over the first half of
+ * the line's fraction (refining, improveShape, reports the second).
  */
 AutomaticShape searchShape(
   const FitContext& context, const CleanPolyline& reference, const ShapeLadder& ladder);

@@ -580,6 +580,36 @@ TEST(AutomaticShape, ReportsProgressEveryRoundAndStopsWhenAsked)
   EXPECT_THROW(fitPolyline(akima(), FitOptions{}, toyBuilder(stopped, stopping)), FitAborted);
 }
 
+TEST(AutomaticShape, ASearchsProgressNeverGoesBackAndRefiningReportsTheSecondHalf)
+{
+  // Its whole audits only check for an abort: they had reported their own
+  // fraction of the spans, back to 0 after a round (and on a long line up to
+  // the end of it before the first raise).
+  std::vector<double> fractions;
+  Toy toy;
+  toy.Wiggle = 0.05; // raising only adds violations: rounds, then refining tries every level
+  toy.Refine = true;
+  toy.Progress = [&](double fraction) {
+    fractions.push_back(fraction);
+    return true;
+  };
+  ToyRun run;
+  fitPolyline(akima(), FitOptions{}, toyBuilder(run, toy, searchShape));
+  ASSERT_GE(fractions.size(), 3u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_GT(fractions.back(), 0.0);
+  EXPECT_LE(fractions.back(), 0.5);
+
+  fractions.clear();
+  ToyRun whole;
+  fitPolyline(akima(), FitOptions{}, toyBuilder(whole, toy));
+  const auto refining =
+    std::find_if(fractions.begin(), fractions.end(), [](double f) { return f >= 0.5; });
+  ASSERT_NE(refining, fractions.end()) << "refining reported nothing";
+  EXPECT_TRUE(std::is_sorted(refining, fractions.end()));
+  EXPECT_LT(fractions.back(), 1.0);
+}
+
 TEST(AutomaticShape, KnotLevelsTakeTheHigherSpan)
 {
   EXPECT_EQ(knotLevels({ 0, 2, 1 }, false), (std::vector<int>{ 0, 2, 2, 1 }));
