@@ -251,6 +251,11 @@ public:
       }
       rejected.clear();
     };
+    // A span whose every level was tried since the last trial kept would meet
+    // the same curve and the same findings again (a span listed next to
+    // several failing ones, or again in the second pass): passed over.
+    int keptTrials = 0;
+    std::vector<int> triedSinceKept(this->Spans, -1);
     for (int pass = 0; pass < RefinePasses && violations > 0; ++pass)
     {
       restoreOutside({});
@@ -266,15 +271,19 @@ public:
         std::vector<char> marked(this->Spans, 0);
         marked[j] = 1;
         const std::vector<int> near = this->around(marked, RefineReach);
-        if (std::none_of(near.begin(), near.end(), [&](int k) { return failing[k] != 0; }))
+        if (std::none_of(near.begin(), near.end(), [&](int k) { return failing[k] != 0; }) ||
+          triedSinceKept[j] == keptTrials)
         {
-          continue; // what it was listed for has been mended
+          continue; // what it was listed for has been mended, or nothing changed since its trials
         }
         const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
+        const int keptBefore = keptTrials;
+        bool everyLevel = true;
         for (const int level : this->refinedLevels(keptLevels[j]))
         {
           if (trials-- <= 0)
           {
+            everyLevel = false;
             break;
           }
           this->Levels = keptLevels;
@@ -323,11 +332,16 @@ public:
             violations = now;
             keptLevels = this->Levels;
             kept = std::move(this->Curve);
+            ++keptTrials;
           }
           else
           {
             rejected = moved;
           }
+        }
+        if (everyLevel && keptTrials == keptBefore)
+        {
+          triedSinceKept[j] = keptTrials;
         }
       }
       if (violations == violationsBefore)

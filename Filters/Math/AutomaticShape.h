@@ -161,7 +161,8 @@ AutomaticShape searchShape(
  * (ShapeLadder::Refine): each span within RefineReach of one left failing
  * (the worst failing first, each followed by its neighbours nearest first:
  * an order the line's direction does not change; a span is passed over
- * once a trial kept has mended every span that near it) is tried alone at
+ * once a trial kept has mended every span that near it, and when every
+ * level of it was tried since the last trial kept) is tried alone at
  * levels 0 and 1 and at a quarter, half and all of the top, rebuilt and
  * audited around it (first the spans failing before, and only if those
  * lose failures, the rest), and the change kept where it lowers the

@@ -528,6 +528,39 @@ TEST(AutomaticShape, RefiningKeepsOnlyWhatLowersTheViolationsWithinItsBudget)
   // Its trials and the searches' curve built again (an interpolation's
   // refining needs no level-0 curve).
   EXPECT_LE(refined.Builds, searched.Builds + RefineTrialsPerSpan * spans + 1);
+
+
+  // No trial is kept, so a span listed next to several failing ones meets
+  // the same curve each time: it is built at each of its other levels (1 and
+  // the top, 2) once. On a longer line, whose budget does not bind.
+  const std::vector<Vec3> longer = straightRunThenAkima();
+  wiggling.Refine = false;
+  ToyRun longerSearched;
+  const FittedPolyline searchedFit = fitPolyline(longer, FitOptions{}, toyBuilder(longerSearched, wiggling));
+  wiggling.Refine = true;
+  ToyRun longerRefined;
+  fitPolyline(longer, FitOptions{}, toyBuilder(longerRefined, wiggling));
+  const int longerSpans = static_cast<int>(longer.size()) - 1;
+  std::vector<char> listed(longerSpans, 0);
+  int timesListed = 0;
+  for (int j = 0; j < longerSpans; ++j)
+  {
+    if (searchedFit.Audit.SpanMask[j] != 0)
+    {
+      for (int k = std::max(0, j - RefineReach); k <= std::min(longerSpans - 1, j + RefineReach); ++k)
+      {
+        listed[k] = 1;
+        ++timesListed;
+      }
+    }
+  }
+  const int distinct = static_cast<int>(std::count(listed.begin(), listed.end(), 1));
+  const int builds = longerRefined.Builds - longerSearched.Builds;
+  std::printf("refining the wiggling toy: %d spans listed %d times, %d builds after the searches\n",
+    distinct, timesListed, builds);
+  ASSERT_GT(timesListed, distinct) << "no span listed twice: the check would not tell";
+  ASSERT_LT(2 * timesListed, RefineTrialsPerSpan * longerSpans) << "the budget binds";
+  EXPECT_LE(builds, 2 * distinct + 1);
 }
 
 TEST(AutomaticShape, GivesUpAfterRoundsThatMeetNoBetterCurve)
