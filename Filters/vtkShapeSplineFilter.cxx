@@ -331,9 +331,8 @@ public:
     }
   }
 
-  static constexpr std::chrono::milliseconds Heartbeat{ 250 };
-
 private:
+  static constexpr std::chrono::milliseconds Heartbeat{ 250 };
   vtkAlgorithm* Algorithm;
   double From, To;
   vtkIdType Total;

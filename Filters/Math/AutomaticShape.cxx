@@ -747,7 +747,7 @@ private:
     {
       // A whole audit only checks for an abort: the line's fraction stays where
       // the rounds or trials put it (it had run ahead to the end on the first).
-      reportProgress(this->Context.Options.Progress, j, 1024, this->Done);
+      reportProgress(this->Context.Options.Progress, j, 1024, this->ReportedFraction);
       if (this->Stale[j])
       {
         this->Auditor.audit(*this->Curve, j);
@@ -760,7 +760,7 @@ private:
   /// Reports the line's progress at fraction (it can abort).
   void progressAt(long step, long every, double fraction)
   {
-    this->Done = fraction;
+    this->ReportedFraction = fraction;
     reportProgress(this->Context.Options.Progress, step, every, fraction);
   }
 
@@ -978,7 +978,7 @@ private:
   std::vector<Figures> LevelZero; ///< see levelZeroFigures
   /// The line's fraction last reported: a search's rounds the first
   /// SearchShare of it, refining the rest (a search that ends early jumps).
-  double Done = 0.0;
+  double ReportedFraction = 0.0;
   static constexpr double SearchShare = 0.5;
 };
 } // namespace
