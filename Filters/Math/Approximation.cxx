@@ -675,13 +675,7 @@ ApproximationPlan planApproximation(const std::vector<Vec3>& points, const std::
   const ProgressCallback& progress)
 {
   // Two searches at most: each reports half the progress.
-  auto half = [&](double start) -> ProgressCallback {
-    if (!progress)
-    {
-      return {};
-    }
-    return [&progress, start](double fraction) { return progress(start + 0.5 * fraction); };
-  };
+  auto half = [&](double start) { return progressWithin(progress, start, start + 0.5); };
   const ScoredPlan uniform = planFrom(points, u, highest, closed, requestedKnots, correctParameters, half(0.0));
   const bool smoothing = points.size() >= SmoothingSpanPoints * static_cast<size_t>(uniform.Plan.Knots);
   const auto warped =

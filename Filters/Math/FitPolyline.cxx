@@ -384,6 +384,13 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
   return auditor.result();
 }
 
+ProgressPart::ProgressPart(const FitContext& whole, double from, double to)
+  : Options(whole.Options)
+  , Context{ whole.Data, whole.Knots, this->Options, whole.CoordinateNoise, whole.PointValues }
+{
+  this->Options.Progress = progressWithin(whole.Options.Progress, from, to);
+}
+
 ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
   const std::vector<double>& referenceNoise) const
 {

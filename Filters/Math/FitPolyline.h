@@ -54,6 +54,24 @@ struct FitContext
     const std::vector<double>& referenceNoise = {}) const;
 };
 
+/**
+ * A context that reports its progress to [from, to] of another's: for a
+ * builder that runs several searches on one line, so that the line's
+ * progress moves on from one to the next rather than each counting from 0.
+ */
+class ProgressPart
+{
+public:
+  ProgressPart(const FitContext& whole, double from, double to);
+  ProgressPart(const ProgressPart&) = delete;
+  ProgressPart& operator=(const ProgressPart&) = delete;
+  const FitContext& context() const { return this->Context; }
+
+private:
+  FitOptions Options;
+  FitContext Context; ///< refers to Options
+};
+
 /// A family's curve and, for an approximation, the polygon whose shape it keeps.
 struct BuiltCurve
 {

@@ -141,6 +141,15 @@ void reportProgress(const ProgressCallback& progress, long step, long every, dou
   }
 }
 
+ProgressCallback progressWithin(const ProgressCallback& whole, double from, double to)
+{
+  if (!whole)
+  {
+    return {};
+  }
+  return [whole, from, to](double fraction) { return whole(from + (to - from) * fraction); };
+}
+
 long SamplingPlan::size() const
 {
   long count = this->Closed ? 0 : 1;

@@ -33,6 +33,9 @@ public:
 /// throws FitAborted when it says stop.
 void reportProgress(const ProgressCallback& progress, long step, long every, double fraction);
 
+/// A part of the work whole reports on: its fractions mapped to [from, to] (none without whole).
+ProgressCallback progressWithin(const ProgressCallback& whole, double from, double to);
+
 struct SamplingOptions
 {
   enum class Mode

@@ -129,3 +129,32 @@ TEST(CurveAuditor, ForgettingASpanDropsWhatItFoundUntilItIsAuditedAgain)
   }
   EXPECT_EQ(previous, 0);
 }
+
+TEST(ProgressPart, ReportsItsFractionsWithinItsPartOfTheWhole)
+{
+  // A builder that runs several searches gives each a part of the line's
+  // progress (qqr: a quarter each), and an abort from the whole stops a part.
+  std::vector<double> reported;
+  bool stop = false;
+  FitOptions options;
+  options.Progress = [&](double fraction) {
+    reported.push_back(fraction);
+    return !stop;
+  };
+  CleanPolyline data;
+  data.Points = helix(8, 1);
+  const std::vector<double> knots = computeKnots(data, Parameterization::ChordLength);
+  const std::vector<double> noValues;
+  const FitContext whole{ data, knots, options, 0.0, noValues };
+  const ProgressPart part(whole, 0.25, 0.5);
+  EXPECT_EQ(&part.context().Data, &data);
+  reportProgress(part.context().Options.Progress, 0, 1, 0.0);
+  reportProgress(part.context().Options.Progress, 0, 1, 0.5);
+  reportProgress(part.context().Options.Progress, 0, 1, 1.0);
+  EXPECT_EQ(reported, (std::vector<double>{ 0.25, 0.375, 0.5 }));
+  stop = true;
+  EXPECT_THROW(reportProgress(part.context().Options.Progress, 0, 1, 0.75), FitAborted);
+  const FitOptions quiet;
+  const FitContext silent{ data, knots, quiet, 0.0, noValues };
+  EXPECT_FALSE(ProgressPart(silent, 0.0, 0.5).context().Options.Progress);
+}
