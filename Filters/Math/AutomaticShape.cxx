@@ -278,13 +278,11 @@ public:
         }
         const std::vector<int> moved = this->around(marked, this->Ladder.Reach);
         const int keptBefore = keptTrials;
-        bool everyLevel = true;
         for (const int level : this->refinedLevels(keptLevels[j]))
         {
           if (trials-- <= 0)
           {
-            everyLevel = false;
-            break;
+            break; // and refining ends: no mark below is read again
           }
           this->Levels = keptLevels;
           this->Levels[j] = level;
@@ -339,7 +337,7 @@ public:
             rejected = moved;
           }
         }
-        if (everyLevel && keptTrials == keptBefore)
+        if (keptTrials == keptBefore)
         {
           triedSinceKept[j] = keptTrials;
         }
