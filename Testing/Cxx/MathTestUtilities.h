@@ -176,22 +176,33 @@ inline double median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
-/// Median relative curvature error on the middle half of a fit of a helix a = 1, b = 0.25.
-inline double medianCurvatureError(const FittedPolyline& fit)
+/// Relative curvature and torsion errors of the samples on the middle half
+/// (by arc length) of a fit of a curve of constant curvature and torsion.
+struct MiddleHalfErrors
+{
+  std::vector<double> Curvature, Torsion;
+};
+inline MiddleHalfErrors middleHalfErrors(const FittedPolyline& fit, double curvature, double torsion)
 {
   const SampledCurve sampled = sampleFit(fit);
-  const double truth = 1.0 / (1.0 + 0.0625);
-  std::vector<double> errors;
+  MiddleHalfErrors errors;
   const double length = sampled.Samples.Length;
   for (int k = 0; k < sampled.Samples.size(); ++k)
   {
     const double s = sampled.Samples.ArcLength[k];
     if (s >= 0.25 * length && s <= 0.75 * length)
     {
-      errors.push_back(std::abs(sampled.Frames[k].Curvature - truth) / truth);
+      errors.Curvature.push_back(std::abs(sampled.Frames[k].Curvature - curvature) / curvature);
+      errors.Torsion.push_back(std::abs(sampled.Frames[k].Torsion - torsion) / torsion);
     }
   }
-  return median(std::move(errors));
+  return errors;
+}
+
+/// Median relative curvature error on the middle half of a fit of a helix a = 1, b = 0.25.
+inline double medianCurvatureError(const FittedPolyline& fit)
+{
+  return median(middleHalfErrors(fit, 1.0 / (1.0 + 0.0625), 0.25 / (1.0 + 0.0625)).Curvature);
 }
 
 /// count sorted random values in [from, to]: points at random places along a curve.

@@ -114,18 +114,10 @@ TEST(Approximation, EveryApproximationAtItsDefaultsConvergesOnExactPoints)
     {
       const FittedPolyline fit = fitPolyline(helix(perTurn, 3), FitOptions{}, builder);
       ASSERT_TRUE(fit.ShapeReference.has_value()) << name << " interpolated";
-      const SampledCurve sampled = sampleFit(fit);
-      std::array<double, 2> errors{ 0.0, 0.0 };
-      const double length = sampled.Samples.Length;
-      for (int k = 0; k < sampled.Samples.size(); ++k)
-      {
-        const double s = sampled.Samples.ArcLength[k];
-        if (s >= 0.25 * length && s <= 0.75 * length)
-        {
-          errors[0] = std::max(errors[0], std::abs(sampled.Frames[k].Curvature - 0.4) / 0.4);
-          errors[1] = std::max(errors[1], std::abs(sampled.Frames[k].Torsion - 0.2) / 0.2);
-        }
-      }
+      const MiddleHalfErrors middle = middleHalfErrors(fit, 0.4, 0.2);
+      const std::array<double, 2> errors{
+        *std::max_element(middle.Curvature.begin(), middle.Curvature.end()),
+        *std::max_element(middle.Torsion.begin(), middle.Torsion.end()) };
       std::printf("%s, %d points a turn, %d knots: curvature error %.2g, torsion %.2g\n", name,
         perTurn, fit.Spline->numberOfSpans() + 1, errors[0], errors[1]);
       EXPECT_LT(errors[0], 0.01) << name << ", " << perTurn;
