@@ -201,35 +201,35 @@ KnotPoints knotPoints(const Lookup& k, int i, const KnotBlend* around)
   return p;
 }
 
-/// Per span, the weights of its six Bezier points on D_{i-2}..D_{i+3}.
-std::vector<SpanWeights> spanWeights(const Lookup& k)
+/// The weights of spans first..last - 1 (of their six Bezier points on
+/// D_{i-2}..D_{i+3}) into weights[first..last - 1].
+void spanWeightsOf(const Lookup& k, int first, int last, std::vector<SpanWeights>& weights)
 {
-  const int n = k.spans();
   // Each auxiliary serves three knots' blends and each blend three knots'
-  // points: computed once per knot, from knot -2 and -1.
+  // points: computed once per knot, from two knots before the first span.
   std::vector<Auxiliary> auxiliaries;
   if (k.P.Continuity == QuinticContinuity::C4)
   {
-    for (int i = -2; i <= n + 2; ++i)
+    for (int i = first - 2; i <= last + 2; ++i)
     {
       auxiliaries.push_back(auxiliary(k, i));
     }
   }
   std::vector<KnotBlend> blends;
-  for (int i = -1; i <= n + 1; ++i)
+  for (int i = first - 1; i <= last + 1; ++i)
   {
-    blends.push_back(knotBlend(k, i, auxiliaries.empty() ? nullptr : &auxiliaries[i + 1]));
+    blends.push_back(
+      knotBlend(k, i, auxiliaries.empty() ? nullptr : &auxiliaries[i - 1 - (first - 2)]));
   }
   std::vector<KnotPoints> points;
-  for (int i = 0; i <= n; ++i)
+  for (int i = first; i <= last; ++i)
   {
-    points.push_back(knotPoints(k, i, &blends[i]));
+    points.push_back(knotPoints(k, i, &blends[i - 1 - (first - 1)]));
   }
-  std::vector<SpanWeights> weights(n);
-  for (int i = 0; i < n; ++i)
+  for (int i = first; i < last; ++i)
   {
-    const KnotPoints& a = points[i];
-    const KnotPoints& b = points[i + 1];
+    const KnotPoints& a = points[i - first];
+    const KnotPoints& b = points[i + 1 - first];
     const Local rows[6] = { a.B0, a.B1, a.B2, fromNext(b.B3Previous), fromNext(b.B4Previous),
       fromNext(b.B0) };
     for (int j = 0; j < 6; ++j)
@@ -237,7 +237,67 @@ std::vector<SpanWeights> spanWeights(const Lookup& k)
       weights[i].row(j) = rows[j].tail<6>().transpose();
     }
   }
+}
+
+/// Per span, the weights of its six Bezier points on D_{i-2}..D_{i+3}.
+std::vector<SpanWeights> spanWeights(const Lookup& k)
+{
+  std::vector<SpanWeights> weights(k.spans());
+  spanWeightsOf(k, 0, k.spans(), weights);
   return weights;
+}
+
+/// The knots on each side of one whose parameters a span's weights read
+/// (auxiliaries one knot away, blends two, Bezier points three, a span its two ends').
+constexpr int WeightsReach = 4;
+
+/// spanWeights(k), recomputed in memo only around the knots whose parameters
+/// changed since memo's last build on the same knots t (an open line's).
+std::vector<SpanWeights> memoizedSpanWeights(
+  const Lookup& k, const std::vector<double>& t, TensionQuinticSpline::WeightsMemo* memo)
+{
+  const int n = k.spans();
+  const QuinticParameters& p = k.P;
+  if (!memo || k.Closed || memo->Knots != t || memo->Weights.size() != static_cast<size_t>(n) ||
+    memo->Parameters.Continuity != p.Continuity ||
+    memo->Parameters.Gamma.size() != p.Gamma.size() ||
+    memo->Parameters.Lambda.size() != p.Lambda.size())
+  {
+    std::vector<SpanWeights> weights = spanWeights(k);
+    if (memo && !k.Closed)
+    {
+      *memo = { t, p, weights };
+    }
+    return weights;
+  }
+  std::vector<char> stale(n, 0);
+  const bool c3 = p.Continuity == QuinticContinuity::C3;
+  for (size_t m = 0; m < p.Gamma.size(); ++m)
+  {
+    if (p.Gamma[m] != memo->Parameters.Gamma[m] || (c3 && p.Lambda[m] != memo->Parameters.Lambda[m]))
+    {
+      const int knot = static_cast<int>(m);
+      std::fill(stale.begin() + std::max(0, knot - WeightsReach),
+        stale.begin() + std::min(n, knot + WeightsReach), 1);
+    }
+  }
+  for (int first = 0; first < n;)
+  {
+    if (!stale[first])
+    {
+      ++first;
+      continue;
+    }
+    int last = first;
+    while (last < n && stale[last])
+    {
+      ++last;
+    }
+    spanWeightsOf(k, first, last, memo->Weights);
+    first = last;
+  }
+  memo->Parameters = p;
+  return memo->Weights;
 }
 
 Lookup lookup(const std::vector<double>& t, const QuinticParameters& parameters, bool closed)
@@ -492,8 +552,8 @@ std::vector<double> solveKnotSystem(const std::vector<double>& t, const std::vec
 }
 } // namespace
 
-TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
-  const std::vector<double>& t, const QuinticParameters& parameters, bool closed, bool recover)
+TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(const std::vector<double>& t,
+  const QuinticParameters& parameters, bool closed, bool recover, WeightsMemo* memo)
 {
   const int n = static_cast<int>(t.size()) - 1;
   const int knots = closed ? n : n + 1;
@@ -517,7 +577,7 @@ TensionQuinticSpline::Abscissae TensionQuinticSpline::solveAbscissae(
       std::fill(relax.begin(), relax.end(), 1.0);
     }
     const Lookup k = lookup(t, result.Parameters, closed);
-    std::vector<SpanWeights> weights = spanWeights(k);
+    std::vector<SpanWeights> weights = memoizedSpanWeights(k, t, memo);
     std::vector<double> target(knots);
     for (int i = 0; i < knots; ++i)
     {
@@ -601,7 +661,7 @@ TensionQuinticSpline::EndDerivatives TensionQuinticSpline::dataEnds(
 
 TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& points,
   const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
-  const EndDerivatives* ends)
+  const EndDerivatives* ends, WeightsMemo* memo)
 {
   const int count = static_cast<int>(points.size());
   const int n = closed ? count : count - 1;
@@ -609,7 +669,7 @@ TensionQuinticSpline TensionQuinticSpline::interpolate(const std::vector<Vec3>& 
   {
     throw std::invalid_argument("tension quintic spline: too few points or knots of the wrong size");
   }
-  Abscissae abscissae = solveAbscissae(knots, parameters, closed);
+  Abscissae abscissae = solveAbscissae(knots, parameters, closed, true, memo);
   const std::vector<SpanWeights>& weights = abscissae.Weights;
   const int unknowns = closed ? n : n + 5;
   Triplets a;
@@ -741,7 +801,7 @@ double TensionQuinticSpline::localParameter(int span, double x) const
 
 TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& points,
   const std::vector<double>& u, const std::vector<double>& knots,
-  const QuinticParameters& parameters, bool closed)
+  const QuinticParameters& parameters, bool closed, WeightsMemo* memo)
 {
   const int n = static_cast<int>(knots.size()) - 1;
   const int unknowns = closed ? n : n + 5;
@@ -749,7 +809,7 @@ TensionQuinticSpline TensionQuinticSpline::approximate(const std::vector<Vec3>& 
   {
     throw std::invalid_argument("tension quintic spline: too few points to approximate");
   }
-  Abscissae abscissae = solveAbscissae(knots, parameters, closed);
+  Abscissae abscissae = solveAbscissae(knots, parameters, closed, true, memo);
   const std::vector<SpanWeights>& weights = abscissae.Weights;
   // The same X with any de Boor points: it maps the data parameters to spans and t.
   const TensionQuinticSpline shape = fromWeights(knots, abscissae.Xi,

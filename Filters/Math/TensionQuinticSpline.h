@@ -65,6 +65,20 @@ public:
   /// Derivatives 1-3 at an open line's start and end (polynomialEndDerivatives).
   using EndDerivatives = std::array<std::array<Vec3, 3>, 2>;
 
+  /**
+   * The weights of one open line's construction at the parameters last asked
+   * for, kept between builds on the same knots: a build whose parameters
+   * differ at a few knots (the automatic mode's searches) recomputes only the
+   * spans those move (a span's weights read the parameters of the knots
+   * within four of it). Closed lines are computed whole.
+   */
+  struct WeightsMemo
+  {
+    std::vector<double> Knots;
+    QuinticParameters Parameters;
+    std::vector<SpanWeights> Weights;
+  };
+
   struct Abscissae
   {
     std::vector<double> Xi;
@@ -93,7 +107,8 @@ public:
    * so uneven that the knot system is singular).
    */
   static Abscissae solveAbscissae(const std::vector<double>& t,
-    const QuinticParameters& parameters, bool closed, bool recover = true);
+    const QuinticParameters& parameters, bool closed, bool recover = true,
+    WeightsMemo* memo = nullptr);
 
   /**
    * Interpolates points (open: n + 1 >= 3 points; closed: n >= 3, knots with
@@ -101,12 +116,13 @@ public:
    * s' and s'' at each end from the polynomial through the six (or fewer)
    * end points, blended by w = min(1, gamma, lambda) of the end knot towards
    * the limit polygon's: s' = w p' + (1 - w) chord slope, s'' = w p''.
-   * ends: those polynomials' derivatives (dataEnds), given by a caller that
-   * builds many curves on the same points and knots.
+   * ends: those polynomials' derivatives (dataEnds), and memo, the weights
+   * of the last build, given by a caller that builds many curves on the same
+   * points and knots.
    */
   static TensionQuinticSpline interpolate(const std::vector<Vec3>& points,
     const std::vector<double>& knots, const QuinticParameters& parameters, bool closed,
-    const EndDerivatives* ends = nullptr);
+    const EndDerivatives* ends = nullptr, WeightsMemo* memo = nullptr);
   /// The derivatives at an open line's start and end of the polynomials
   /// interpolate() takes its end conditions from (polynomialEndDerivatives).
   static EndDerivatives dataEnds(const std::vector<Vec3>& points, const std::vector<double>& knots);
@@ -117,11 +133,11 @@ public:
    * normal equations are banded, cyclic when closed). Needs enough points on
    * every span. Closed: knots end with the closing one, parameters have one
    * entry per distinct knot, and u may hold the closing parameter after the
-   * points'.
+   * points'. memo: as interpolate's.
    */
   static TensionQuinticSpline approximate(const std::vector<Vec3>& points,
     const std::vector<double>& u, const std::vector<double>& knots,
-    const QuinticParameters& parameters, bool closed = false);
+    const QuinticParameters& parameters, bool closed = false, WeightsMemo* memo = nullptr);
 
   Derivatives evaluateOnSpan(int span, double x, int order) const override;
   /// In the span's own variable u: the length of C(u) (a quintic), whose

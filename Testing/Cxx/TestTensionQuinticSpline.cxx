@@ -253,6 +253,40 @@ TEST_P(Family, KnotSystemPutsTheKnotsWhereAsked)
   }
 }
 
+TEST_P(Family, WeightsKeptBetweenBuildsAreThoseComputedWhole)
+{
+  // A memo recomputes only the spans near knots whose parameters changed:
+  // every span's weights must be exactly those of the whole construction,
+  // whichever knots change (one, a few, near the ends, or none).
+  std::mt19937 rng(29);
+  const int spans = 24;
+  const auto t = randomKnots(rng, spans);
+  std::uniform_int_distribution<int> knot(0, spans), howMany(0, 3);
+  std::uniform_real_distribution<double> gamma(0.05, GetParam() == QuinticContinuity::C3 ? 1.9 : 1.0),
+    lambda(0.1, 2.0);
+  auto p = randomParameters(rng, GetParam(), spans + 1);
+  TensionQuinticSpline::WeightsMemo memo;
+  for (int build = 0; build < 60; ++build)
+  {
+    const auto remembered = TensionQuinticSpline::solveAbscissae(t, p, false, false, &memo);
+    const auto whole = TensionQuinticSpline::solveAbscissae(t, p, false, false);
+    ASSERT_EQ(remembered.Weights.size(), whole.Weights.size());
+    for (size_t j = 0; j < whole.Weights.size(); ++j)
+    {
+      ASSERT_TRUE((remembered.Weights[j].array() == whole.Weights[j].array()).all())
+        << "span " << j << " after build " << build;
+    }
+    EXPECT_EQ(remembered.Xi, whole.Xi);
+    for (int changes = howMany(rng); changes > 0; --changes)
+    {
+      const int k = build % 10 == 0 ? (build % 20 == 0 ? 0 : spans) : knot(rng);
+      p.Gamma[k] = gamma(rng);
+      p.Lambda[k] = lambda(rng);
+    }
+  }
+  EXPECT_EQ(memo.Knots, t);
+}
+
 TEST(TensionQuinticSpline, KnotSystemRecoversFromANonIncreasingSolution)
 {
   // Footnote 3: C4 tension next to a short span between long ones makes (34)
