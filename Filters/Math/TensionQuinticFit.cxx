@@ -82,12 +82,15 @@ BuiltCurve interpolate(const FitContext& context, const QuinticFitOptions& quint
   const auto ends = data.Closed
     ? std::nullopt
     : std::optional(TensionQuinticSpline::dataEnds(data.Points, context.Knots));
-  TensionQuinticSpline::WeightsMemo memo; // a search's builds change a few knots at a time
+  // A search's builds change a few knots at a time; a fixed build needs no
+  // copy of its weights (a line of 1e6 points: 288 MB).
+  TensionQuinticSpline::WeightsMemo memo;
+  TensionQuinticSpline::WeightsMemo* const kept = quintic.Automatic ? &memo : nullptr;
   ladder.Build = [&](const std::vector<int>& levels) {
     return builtAt(levels, [&] {
       return std::make_unique<TensionQuinticSpline>(TensionQuinticSpline::interpolate(data.Points,
         context.Knots, loweredParameters(quintic, levels, data.Closed), data.Closed,
-        ends ? &*ends : nullptr, &memo));
+        ends ? &*ends : nullptr, kept));
     });
   };
   return fixedOrAutomatic(quintic.Automatic, context, data, ladder);
@@ -104,13 +107,14 @@ QuinticApproximation approximateKeepingTorsionSigns(const std::vector<Vec3>& poi
   ShapeLadder ladder = quinticLadder(quintic);
   ladder.ReferenceNoise = reference.VertexNoise;
   ladder.Bounds.CurvatureChange = 2.0; // keeping L*'s shape must not flatten the fit
-  TensionQuinticSpline::WeightsMemo memo;
+  TensionQuinticSpline::WeightsMemo memo; // as the interpolation's
+  TensionQuinticSpline::WeightsMemo* const kept = quintic.Automatic ? &memo : nullptr;
   ladder.Build = [&](const std::vector<int>& levels) {
     return builtAt(levels, [&]() -> std::unique_ptr<Curve> {
       const std::vector<int> all = data.Extra > 0 ? extendedLevels(levels, data.Extra) : levels;
       auto whole = std::make_unique<TensionQuinticSpline>(
         TensionQuinticSpline::approximate(data.Points, data.Parameters, data.Knots,
-          loweredParameters(quintic, all, closed), closed, &memo));
+          loweredParameters(quintic, all, closed), closed, kept));
       if (data.Extra == 0)
       {
         return whole;
