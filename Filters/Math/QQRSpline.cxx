@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -389,11 +390,11 @@ QQRSpline QQRSpline::make(QQRConstruction construction, const std::vector<Vec3>&
 
 QQRSpline QQRSpline::make(QQRConstruction construction, const std::vector<Vec3>& points,
   const std::vector<double>& knots, bool closed, const std::vector<double>& knotExponents,
-  const Local& local, const QQRKnotShape& knotShape)
+  const Local& local, const QQRKnotShape& knotShape, GeometryMemo* memo)
 {
   return build(points, knots, closed,
     knotExponentsToSpans(knotExponents, static_cast<int>(points.size()), closed), local, knotShape,
-    construction);
+    construction, memo);
 }
 
 namespace
@@ -453,6 +454,28 @@ public:
     }
     return used;
   }
+
+  /// Takes memo's x, y, z but at the paper indices marked in moved.
+  void reuse(const QQRSpline::GeometryMemo& memo, const std::vector<char>& moved)
+  {
+    for (size_t i = 0; i < moved.size(); ++i)
+    {
+      if (!moved[i])
+      {
+        this->MemoX[i] = memo.X[i];
+        this->MemoY[i] = memo.Y[i];
+        this->MemoZ[i] = memo.Z[i];
+      }
+    }
+  }
+  /// Leaves the x, y, z computed so far in memo.
+  void keep(QQRSpline::GeometryMemo& memo) const
+  {
+    memo.X = this->MemoX;
+    memo.Y = this->MemoY;
+    memo.Z = this->MemoZ;
+  }
+  size_t memoSize() const { return this->MemoX.size(); }
 
 private:
   /// R(i) = R_{i-1,i}, S(i) = S_{i-1}, T(i) = T_{i-1} of section 3.4 (paper
@@ -630,12 +653,14 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
  * SciPy's CubicSpline) where notAKnot says so for that end, natural
  * (s'' = 0) there otherwise, where a line has only two spans or where an end
  * exponent leaves the third derivative unbounded; doubled control points
- * where it leaves the second unbounded too.
+ * where it leaves the second unbounded too. rows: the point rows of an
+ * earlier build, taken where the paper indices they read are not moved
+ * (nullptr: none); on return, this build's.
  */
 std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   const std::vector<double>& dh, bool closed, const QQRGeometry& geometry,
   const std::vector<std::array<double, 2>>& exponents, std::array<bool, 2> notAKnot,
-  DeferredCondition* condition)
+  DeferredCondition* condition, std::vector<Eigen::Vector4d>& rows, const std::vector<char>* moved)
 {
   const int n = static_cast<int>(points.size());
   const int spans = static_cast<int>(dh.size());
@@ -651,10 +676,17 @@ std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   };
   // The curve passes through every point: at its knot, the start of its span
   // (the end of the last span for an open line's last point).
+  const bool earlier = moved && rows.size() == static_cast<size_t>(n);
+  rows.resize(n);
   for (int i = 0; i < n; ++i)
   {
     const int k = std::min(i, spans - 1);
-    addRow(i, k, derivativeWeights(geometry, exponents[k], dh[k], k, i > k, 0), 1.0);
+    const int index = k + 1 + (i > k); // the paper index of the knot's Tk
+    if (!earlier || (*moved)[index - 1] || (*moved)[index])
+    {
+      rows[i] = derivativeWeights(geometry, exponents[k], dh[k], k, i > k, 0);
+    }
+    addRow(i, k, rows[i], 1.0);
     rhs.row(i) = points[i].transpose();
   }
   if (!closed)
@@ -698,11 +730,54 @@ std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   }
   return control;
 }
+/// Equal values, NaN equal to NaN (a NaN entry asks for the default).
+bool sameValues(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() &&
+    std::equal(a.begin(), a.end(), b.begin(),
+      [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); });
+}
+
+/**
+ * The paper indices 0..size - 1 whose x, y, z an open line's shape moves
+ * from before to now (see QQRSpline::GeometryMemo), or nothing when the two
+ * differ in more than Straightness and Flattening.
+ */
+std::optional<std::vector<char>> movedIndices(
+  const QQRKnotShape& before, const QQRKnotShape& now, size_t size)
+{
+  if (!sameValues(before.X, now.X) || !sameValues(before.Y, now.Y) ||
+    !sameValues(before.Z, now.Z) || before.StraightThrough != now.StraightThrough)
+  {
+    return std::nullopt;
+  }
+  std::vector<char> moved(size, 0);
+  auto mark = [&](size_t from, size_t to) {
+    std::fill(moved.begin() + std::min(from, size), moved.begin() + std::min(to + 1, size), 1);
+  };
+  // Beyond a vector's end (or all of an empty one) the value is 0.
+  auto at = [](const std::vector<double>& v, size_t j) { return j < v.size() ? v[j] : 0.0; };
+  for (size_t k = 0; k < std::max(before.Straightness.size(), now.Straightness.size()); ++k)
+  {
+    if (at(before.Straightness, k) != at(now.Straightness, k))
+    {
+      mark(k, k + 3);
+    }
+  }
+  for (size_t j = 0; j < std::max(before.Flattening.size(), now.Flattening.size()); ++j)
+  {
+    if (at(before.Flattening, j) != at(now.Flattening, j))
+    {
+      mark(j + 1, j + 1);
+    }
+  }
+  return moved;
+}
 } // namespace
 
 QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<double>& knots,
   bool closed, std::vector<std::array<double, 2>> exponents, const Local& local,
-  const QQRKnotShape& knotShape, QQRConstruction construction)
+  const QQRKnotShape& knotShape, QQRConstruction construction, GeometryMemo* memo)
 {
   const int n = static_cast<int>(points.size());
   const int spans = closed ? n : n - 1;
@@ -754,8 +829,24 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     throw std::invalid_argument("qqr: StraightThrough needs one flag per point (" +
       std::to_string(n) + "), got " + std::to_string(knotShape.StraightThrough.size()));
   }
-  const QQRGeometry geometry(
+  QQRGeometry geometry(
     dh, n, closed, local, knotShape, construction == QQRConstruction::LocalInterpolation);
+  const bool remember = memo && !closed;
+  const auto sameLocal = [&](const Local& other) {
+    return sameValues({ other.X, other.Y, other.Z }, { local.X, local.Y, local.Z });
+  };
+  std::optional<std::vector<char>> moved;
+  std::vector<Eigen::Vector4d> rows;
+  if (remember && memo->Knots == knots && memo->Construction == construction &&
+    sameLocal(memo->LocalShape) && memo->X.size() == geometry.memoSize())
+  {
+    moved = movedIndices(memo->Shape, knotShape, geometry.memoSize());
+    if (moved)
+    {
+      geometry.reuse(*memo, *moved);
+      rows = memo->Rows;
+    }
+  }
   QQRSpline spline(knots, closed);
   // Control point P(j): the data's (open ends doubled, P(-1) = P(0), as
   // section 3.6 does), or those solved for the global interpolation (open:
@@ -776,8 +867,8 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     constexpr int EndReach = 3;
     const std::array<bool, 2> notAKnot{ !straightened(0, EndReach - 1),
       !straightened(spans - EndReach, spans - 1) };
-    control = interpolatingControlPoints(
-      points, dh, closed, geometry, exponents, notAKnot, &spline.Condition);
+    control = interpolatingControlPoints(points, dh, closed, geometry, exponents, notAKnot,
+      &spline.Condition, rows, moved ? &*moved : nullptr);
   }
   auto P = [&](int j) -> const Vec3& {
     if (!control.empty())
@@ -797,6 +888,15 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
   {
     spline.Bezier.push_back(geometry.bezier<Vec3>(k, P));
     spline.QuarticPower.push_back(bezierToPower(spline.Bezier.back()));
+  }
+  if (remember)
+  {
+    geometry.keep(*memo);
+    memo->Rows = std::move(rows);
+    memo->Knots = knots;
+    memo->LocalShape = local;
+    memo->Shape = knotShape;
+    memo->Construction = construction;
   }
   return spline;
 }
@@ -944,6 +1044,7 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       ladder.MaxRounds = options.MaxRounds;
       ladder.Reach = 3; // a span's local parameters move its neighbours and the global solve
       ladder.RetrySpanBySpan = true;
+      QQRSpline::GeometryMemo straighteningMemo; // a search's builds move a few spans at a time
       ladder.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
         shape.Straightness.resize(levels.size());
         std::transform(levels.begin(), levels.end(), shape.Straightness.begin(), qqrStraightness);
@@ -960,7 +1061,7 @@ CurveBuilder qqrBuilder(const QQROptions& options)
           }
         }
         return std::make_unique<QQRSpline>(QQRSpline::make(options.Construction, data.Points,
-          context.Knots, data.Closed, exponents, local, shape));
+          context.Knots, data.Closed, exponents, local, shape, &straighteningMemo));
       };
       // Flattening the curve at a failing span's knots keeps torsion signs
       // that moving the span towards its chord cannot (that keeps the sign
@@ -993,11 +1094,12 @@ CurveBuilder qqrBuilder(const QQROptions& options)
       flattening.Mends = criterionBit(ShapeCriterion::TorsionSignAtKnot) |
         criterionBit(ShapeCriterion::TorsionSignOnSpan);
       QQRKnotShape flat = given;
+      QQRSpline::GeometryMemo flatteningMemo;
       flattening.Build = [&](const std::vector<int>& levels) -> std::unique_ptr<Curve> {
         const std::vector<int> perKnot = knotLevels(levels, data.Closed);
         flat.Flattening.assign(perKnot.begin(), perKnot.end());
         return std::make_unique<QQRSpline>(QQRSpline::make(options.Construction, data.Points,
-          context.Knots, data.Closed, std::vector<double>(n, kappa), local, flat));
+          context.Knots, data.Closed, std::vector<double>(n, kappa), local, flat, &flatteningMemo));
       };
       // Straightening runs first, its search alone (searchShape, neither
       // retried span by span nor refined: most of its cost where violations are

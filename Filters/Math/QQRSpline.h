@@ -197,6 +197,26 @@ public:
   using Local = QQRLocalShape;
 
   /**
+   * The local shape parameters x, y, z (per paper index) of one open line's
+   * last build, kept for the next build on the same knots whose shape differs
+   * only in Straightness and Flattening (the automatic mode's searches): it
+   * computes again only those a changed span or point moves (x, y and z at
+   * paper index i read the straightness of spans i - 3..i and the flattening
+   * of point i - 1).
+   */
+  struct GeometryMemo
+  {
+    std::vector<double> Knots;
+    Local LocalShape;
+    QQRKnotShape Shape;
+    QQRConstruction Construction = QQRConstruction::Interpolation;
+    std::vector<double> X, Y, Z;
+    /// The interpolation's row per point: its knot's weights on P(k-1)..P(k+2)
+    /// (they read x, y, z at two paper indices).
+    std::vector<Eigen::Vector4d> Rows;
+  };
+
+  /**
    * The curve of the construction through (or on the control polygon of) the
    * points at the knots, with global alpha, beta (>= 2) and local shape
    * parameters local (NaN: the paper's choice before Figure 5), or per point
@@ -212,10 +232,11 @@ public:
   static QQRSpline make(QQRConstruction construction, const std::vector<Vec3>& points,
     const std::vector<double>& knots, bool closed, double alpha, double beta,
     const Local& local = {}, const QQRKnotShape& knotShape = {});
-  /// The same with one exponent per point (alpha = beta at that knot; points.size() values).
+  /// The same with one exponent per point (alpha = beta at that knot; points.size() values);
+  /// memo: the last build's, given by a caller that builds many curves on the same points.
   static QQRSpline make(QQRConstruction construction, const std::vector<Vec3>& points,
     const std::vector<double>& knots, bool closed, const std::vector<double>& knotExponents,
-    const Local& local = {}, const QQRKnotShape& knotShape = {});
+    const Local& local = {}, const QQRKnotShape& knotShape = {}, GeometryMemo* memo = nullptr);
 
   Derivatives evaluateOnSpan(int span, double t, int order) const override;
   /// Per span "Alpha", the larger of its two exponents, "Straightness" and
@@ -242,7 +263,7 @@ private:
   QQRSpline(std::vector<double> knots, bool closed);
   static QQRSpline build(const std::vector<Vec3>& points, const std::vector<double>& knots,
     bool closed, std::vector<std::array<double, 2>> exponents, const Local& local,
-    const QQRKnotShape& knotShape, QQRConstruction construction);
+    const QQRKnotShape& knotShape, QQRConstruction construction, GeometryMemo* memo = nullptr);
 
   std::vector<std::array<Vec3, 5>> Bezier;
   /// Per span, the power form of its quartic Bezier curve (bezierToPower):

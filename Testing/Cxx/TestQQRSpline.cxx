@@ -1214,6 +1214,62 @@ TEST(QQRSpline, AFlattenedKnotHasNoCurvatureAndKeepsC2)
   }
 }
 
+TEST(QQRSpline, ShapeKeptBetweenBuildsGivesTheCurveBuiltWhole)
+{
+  // A memo computes again only the local parameters (and interpolation rows)
+  // that a changed straightness or flattening moves: every build must be the
+  // one made without it, bit for bit, whichever spans and knots change (none,
+  // a few, next to the ends), straightness and flattening together, with
+  // straight runs through some knots and per-point z given.
+  std::mt19937 random(91);
+  for (const QQRConstruction construction : { QQRConstruction::Interpolation,
+         QQRConstruction::ControlPolygon, QQRConstruction::LocalInterpolation })
+  {
+    const std::vector<Vec3> points = RandomPoints(20, random);
+    const int n = static_cast<int>(points.size());
+    const int spans = n - 1;
+    const std::vector<double> t = RandomKnots(n, random, 1.5);
+    std::uniform_int_distribution<int> span(0, spans - 1), point(0, n - 1), howMany(0, 3);
+    std::uniform_real_distribution<double> fraction(0.0, 1.0);
+    QQRKnotShape shape;
+    shape.StraightThrough.assign(n, 0);
+    shape.StraightThrough[6] = shape.StraightThrough[7] = 1;
+    shape.Z.assign(n, std::numeric_limits<double>::quiet_NaN());
+    shape.Z[12] = 0.3;
+    QQRSpline::GeometryMemo memo;
+    for (int build = 0; build < 40; ++build)
+    {
+      const std::vector<double> exponents(n, build % 3 == 0 ? 4.0 : 6.0);
+      const QQRSpline kept =
+        QQRSpline::make(construction, points, t, false, exponents, {}, shape, &memo);
+      const QQRSpline whole = QQRSpline::make(construction, points, t, false, exponents, {}, shape);
+      for (int k = 0; k < spans; ++k)
+      {
+        for (int j = 0; j < 5; ++j)
+        {
+          ASSERT_TRUE(kept.bezier(k)[j] == whole.bezier(k)[j])
+            << "span " << k << " after build " << build;
+        }
+      }
+      EXPECT_TRUE(kept.knotShape().X == whole.knotShape().X);
+      EXPECT_TRUE(kept.knotShape().Y == whole.knotShape().Y);
+      EXPECT_TRUE(kept.knotShape().Z == whole.knotShape().Z);
+      // The next build's shape: a few spans straightened or released, a
+      // few knots flattened (the ends among them every tenth build).
+      shape.Straightness.resize(spans, 0.0);
+      shape.Flattening.resize(n, 0.0);
+      for (int changes = howMany(random); changes > 0; --changes)
+      {
+        const int k = build % 10 == 9 ? spans - 1 : span(random);
+        shape.Straightness[k] = fraction(random) < 0.3 ? 0.0 : fraction(random);
+        const int j = build % 10 == 4 ? 0 : point(random);
+        shape.Flattening[j] = fraction(random) < 0.5 ? 0.0 : 1.0;
+      }
+    }
+    EXPECT_EQ(memo.Knots, t);
+  }
+}
+
 TEST(QQRSpline, OpenEndsDoubleTheEndPoints)
 {
   // P_{-1} = P_0: the end tangent is along the first chord, the paper's (3.20)
