@@ -653,9 +653,9 @@ Eigen::Vector4d derivativeWeights(const QQRGeometry& geometry, const std::array<
  * SciPy's CubicSpline) where notAKnot says so for that end, natural
  * (s'' = 0) there otherwise, where a line has only two spans or where an end
  * exponent leaves the third derivative unbounded; doubled control points
- * where it leaves the second unbounded too. rows: the point rows of an
- * earlier build, taken where the paper indices they read are not moved
- * (nullptr: none); on return, this build's.
+ * where it leaves the second unbounded too. rows: an earlier build's rows
+ * of the points, each taken where moved (per paper index; nullptr: none
+ * taken) marks neither index it reads; on return, this build's.
  */
 std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   const std::vector<double>& dh, bool closed, const QQRGeometry& geometry,
@@ -730,6 +730,7 @@ std::vector<Vec3> interpolatingControlPoints(const std::vector<Vec3>& points,
   }
   return control;
 }
+
 /// Equal values, NaN equal to NaN (a NaN entry asks for the default).
 bool sameValues(const std::vector<double>& a, const std::vector<double>& b)
 {
