@@ -845,7 +845,9 @@ QQRSpline QQRSpline::build(const std::vector<Vec3>& points, const std::vector<do
     if (moved)
     {
       geometry.reuse(*memo, *moved);
-      rows = memo->Rows;
+      // Taken, not copied: a build that throws leaves the memo without rows,
+      // and the next one computes them all (interpolatingControlPoints).
+      rows = std::move(memo->Rows);
     }
   }
   QQRSpline spline(knots, closed);
