@@ -518,8 +518,7 @@ def noise_sweep_lines(rng):
     centerlines = []
     for i in range(60):
         count = int(rng.integers(80, 301))
-        steps = rng.uniform(0, 1, count) if i % 2 else np.cumsum(rng.uniform(0.3, 1.7, count))
-        u = np.sort(steps) if i % 2 else steps
+        u = np.sort(rng.uniform(0, 1, count)) if i % 2 else np.cumsum(rng.uniform(0.3, 1.7, count))
         u = (u - u[0]) / (u[-1] - u[0])
         xyz = np.zeros((count, 3))
         for axis in range(3):
