@@ -130,4 +130,46 @@ double coordinatePrecision(vtkPolyData* polyData)
   }
   return floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
 }
+double coordinateStep(vtkPolyData* polyData)
+{
+  vtkPoints* points = polyData->GetPoints();
+  if (!points || points->GetNumberOfPoints() == 0)
+  {
+    return 0.0;
+  }
+  const auto values = vtk::DataArrayValueRange(points->GetData());
+  double largest = 0.0;
+  for (const double value : values)
+  {
+    if (!std::isfinite(value))
+    {
+      return 0.0;
+    }
+    largest = std::max(largest, std::abs(value));
+  }
+  const double precision = coordinatePrecision(polyData);
+  // A step is tested only well above the type's rounding, so that a value
+  // off the step by that rounding is told from one off by chance (at most an
+  // eighth of the step either way: a quarter of random values pass each).
+  constexpr double StepOverRounding = 16.0;
+  constexpr int FewestDigits = 2;
+  for (int digits = 0; digits <= std::numeric_limits<double>::digits10; ++digits)
+  {
+    const double scale = std::pow(10.0, digits); // exact up to 1e15
+    const double step = 1.0 / scale;
+    if (step < StepOverRounding * precision * largest)
+    {
+      break;
+    }
+    const bool multiples = std::all_of(values.begin(), values.end(), [&](double value) {
+      const double steps = value * scale;
+      return std::abs(steps - std::round(steps)) <= 2.0 * precision * (std::abs(steps) + 1.0);
+    });
+    if (multiples)
+    {
+      return digits < FewestDigits ? 0.0 : step;
+    }
+  }
+  return 0.0;
+}
 } // namespace shapesplines

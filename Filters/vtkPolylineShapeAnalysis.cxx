@@ -436,8 +436,10 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   shapesplines::ShapeTolerances tolerances;
   tolerances.Data = this->DataShapeTolerance;
   tolerances.Curve = this->CurveShapeTolerance;
-  // As the curve filters do: a turn within the rounding of float input is no shape.
+  // As the curve filters do: a turn or twist within the rounding of float
+  // input, or of coordinates written with few decimals, is no shape.
   const double precision = shapesplines::coordinatePrecision(input);
+  const double decimalNoise = 0.5 * std::sqrt(3.0) * shapesplines::coordinateStep(input);
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
@@ -448,7 +450,8 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
     {
       largest = std::max(largest, p.cwiseAbs().maxCoeff());
     }
-    const auto shape = shapesplines::discreteShape(data, tolerances, {}, precision * largest);
+    const auto shape =
+      shapesplines::discreteShape(data, tolerances, {}, precision * largest, decimalNoise);
     if (finite)
     {
       discrete.Write(lines[l].PointIds, data, shape);

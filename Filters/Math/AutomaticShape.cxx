@@ -65,8 +65,8 @@ public:
     , Context(context)
     , Reference(reference)
     , Ladder(ladder)
-    , Shape(discreteShape(
-        reference, context.Options.Tolerances, ladder.ReferenceNoise, context.CoordinateNoise))
+    , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise,
+        context.CoordinateNoise, context.DecimalNoise))
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
         context.Options.AuditSubdivisions, context.CoordinateNoise,

@@ -386,7 +386,8 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 
 ProgressPart::ProgressPart(const FitContext& whole, double from, double to)
   : Options(whole.Options)
-  , Context{ whole.Data, whole.Knots, this->Options, whole.CoordinateNoise, whole.PointValues }
+  , Context{ whole.Data, whole.Knots, this->Options, whole.CoordinateNoise, whole.PointValues,
+      whole.DecimalNoise }
 {
   this->Options.Progress = progressWithin(whole.Options.Progress, from, to);
 }
@@ -395,7 +396,8 @@ ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
   const std::vector<double>& referenceNoise) const
 {
   return auditCurve(curve, reference,
-    discreteShape(reference, this->Options.Tolerances, referenceNoise, this->CoordinateNoise),
+    discreteShape(reference, this->Options.Tolerances, referenceNoise, this->CoordinateNoise,
+      this->DecimalNoise),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
 }
@@ -602,6 +604,8 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   }
   fit.CoordinateNoise = options.CoordinatePrecision *
     std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) / fit.Scale;
+  // Each coordinate rounded by up to half the step: a point by up to sqrt(3) / 2 of it.
+  fit.DecimalNoise = 0.5 * std::sqrt(3.0) * options.CoordinateStep / fit.Scale;
   for (Vec3& p : fit.Data.Points)
   {
     p = (p - fit.Origin) / fit.Scale;
@@ -639,7 +643,8 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
     {
       values.push_back(pointValues[fit.Data.SourceIndex[i]]);
     }
-    built = build(FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values });
+    built = build(
+      FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values, fit.DecimalNoise });
   }
   fit.Spline = std::move(built.Spline);
   fit.ShapeReference = std::move(built.ShapeReference);
@@ -650,7 +655,8 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.NoiseLevel = built.NoiseLevel * fit.Scale;
   fit.StarvedSpan = built.StarvedSpan;
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
-  fit.Shape = discreteShape(reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise);
+  fit.Shape = discreteShape(
+    reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise, fit.DecimalNoise);
   fit.LooksNoisy = !fit.ShapeReference && !mostlyStraightRuns(fit.Shape) &&
     looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   fit.Audit = built.Audit ? *std::move(built.Audit)

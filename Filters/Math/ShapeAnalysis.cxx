@@ -51,7 +51,7 @@ const char* shapeCriterionName(ShapeCriterion criterion)
 }
 
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
-  const std::vector<double>& vertexNoise, double coordinateNoise)
+  const std::vector<double>& vertexNoise, double coordinateNoise, double decimalNoise)
 {
   const int n = static_cast<int>(data.Points.size());
   // How far segment i's direction turns with its vertices' noise, times its length.
@@ -97,7 +97,9 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     straightAt[i] = straight;
     // What the vertices' noise can do to the turning sine: both directions turn.
     const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
-    const bool significant = turn > NoiseSignificance * noiseTurn;
+    // The most the decimals' rounding can do to it (a bound, not a spread).
+    const double roundingTurn = 2.0 * decimalNoise * (1.0 / length[before] + 1.0 / length[i]);
+    const bool significant = turn > NoiseSignificance * noiseTurn && turn > roundingTurn;
     shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
     shape.Reversal[i] = straight && unit[before].dot(unit[i]) < 0;
     shape.Convex[i] = !straight && significant;
@@ -178,10 +180,15 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
       !(crosses > 0);
     // What the vertices' noise can do to the triple product: each of the
     // three directions turns by about noise / length out of the others' plane.
-    const double noiseTwist = b.cross(c).norm() * segmentNoise(before) / length[before] +
-      (a.cross(b).norm() + b.cross(c).norm()) * segmentNoise(i) / length[i] +
-      a.cross(b).norm() * segmentNoise(next) / length[next];
-    const bool significant = std::abs(triple) > NoiseSignificance * noiseTwist;
+    auto twistBy = [&](const auto& moved) {
+      return b.cross(c).norm() * moved(before) / length[before] +
+        (a.cross(b).norm() + b.cross(c).norm()) * moved(i) / length[i] +
+        a.cross(b).norm() * moved(next) / length[next];
+    };
+    const double noiseTwist = twistBy(segmentNoise);
+    const double roundingTwist = twistBy([&](int) { return 2.0 * decimalNoise; });
+    const bool significant =
+      std::abs(triple) > NoiseSignificance * noiseTwist && std::abs(triple) > roundingTwist;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat;
     shape.Twisted[i] = !flat && significant;

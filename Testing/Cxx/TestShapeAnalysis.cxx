@@ -294,6 +294,52 @@ TEST(DiscreteShape, TurnsWithinTheCoordinatesRoundingAreNoShape)
   }
 }
 
+TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
+{
+  // A straight run in a tilted direction and a planar zigzag in a tilted
+  // plane (a protein's beta strand), written with three decimals: their
+  // points turn and twist either way by their rounding, which taken as exact
+  // are convex points and twisted segments. The most rounding to 1e-3 can
+  // move a point is sqrt(3) / 2 1e-3: within that bound nothing counts, and
+  // the zigzag's own turns still do.
+  const double step = 1e-3;
+  const double moved = 0.5 * std::sqrt(3.0) * step;
+  const Vec3 along = Vec3(1.0, 2.0, 2.0) / 3.0, across = Vec3(2.0, 1.0, -2.0) / 3.0;
+  std::vector<Vec3> run, zigzag;
+  for (int i = 0; i < 12; ++i)
+  {
+    const Vec3 p = Vec3(0.1, 0.2, 0.3) + 0.37 * i * along;
+    run.push_back((p / step).array().round().matrix() * step);
+    const Vec3 q = p + (i % 2 ? 0.15 : -0.15) * across;
+    zigzag.push_back((q / step).array().round().matrix() * step);
+  }
+  const CleanPolyline straight = cleanPolyline(run, false);
+  const DiscreteShape exactRun = discreteShape(straight);
+  const DiscreteShape roundedRun = discreteShape(straight, {}, {}, 0.0, moved);
+  EXPECT_GE(std::count(exactRun.Convex.begin(), exactRun.Convex.end(), 1), 5);
+  EXPECT_EQ(std::count(roundedRun.Convex.begin(), roundedRun.Convex.end(), 1), 0);
+  const CleanPolyline strand = cleanPolyline(zigzag, false);
+  const DiscreteShape exactStrand = discreteShape(strand);
+  const DiscreteShape roundedStrand = discreteShape(strand, {}, {}, 0.0, moved);
+  EXPECT_GE(std::count(exactStrand.Twisted.begin(), exactStrand.Twisted.end(), 1), 6);
+  EXPECT_EQ(std::count(roundedStrand.Twisted.begin(), roundedStrand.Twisted.end(), 1), 0);
+  EXPECT_EQ(roundedStrand.Convex, exactStrand.Convex);
+  EXPECT_EQ(std::count(roundedStrand.Convex.begin(), roundedStrand.Convex.end(), 1), 10);
+
+  // A turn the rounding cannot make counts: at point 1 of (0, 0, 0),
+  // (1, 0, 0), (2, y, 0) rounding turns the sine by at most 2 moved (1 + 1 /
+  // |segment 1|), about 3.5e-3; the bound is the line between 0.9 and 1.1 of it.
+  for (const double factor : { 0.9, 1.1 })
+  {
+    const double bound = 2.0 * moved * 2.0;
+    const double y = factor * bound; // sine of the turn, to 1e-5 of itself
+    const CleanPolyline turn =
+      cleanPolyline({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, y, 0) }, false);
+    EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, moved).Convex[1], factor > 1.0) << factor;
+    EXPECT_TRUE(discreteShape(turn).Convex[1]) << factor;
+  }
+}
+
 TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
 {
   std::vector<Vec3> points = helix(8, 2);

@@ -3,6 +3,7 @@
 // approximating families (with vtkTensionQuinticSplineFilter); and the warning
 // of every automatic shape mode.
 #include "FilterTestUtilities.h"
+#include "LineCells.h"
 
 #include "vtkCellData.h"
 #include "vtkCubicSplineFilter.h"
@@ -17,6 +18,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
 
 using namespace shapesplines::filtertest;
@@ -737,6 +740,144 @@ TEST(AutomaticShapeFilters, FloatPointsConvertedToDoubleKeepTheirRounding)
   points->SetPoint(0, moved);
   doubles->Modified();
   EXPECT_GT(cubicViolations(doubles), asFloat);
+}
+
+namespace
+{
+/// The largest curvature of a run's output.
+double LargestCurvature(const FilterRun& run)
+{
+  vtkDataArray* curvature = PointArray(run.Output, "Curvature");
+  return curvature->GetRange()[1];
+}
+
+/// Filter's default mode on points whose turns and twists are within the
+/// rounding of their decimals: the fixed curve, no criterion failed. The
+/// same values off their decimals (jittered), taken as exact: the fixed
+/// curve fails criteria and the default mode bends the curve to keep them.
+template <class Filter>
+void ExpectRoundingIsNoShape(vtkPolyData* rounded, vtkPolyData* jittered)
+{
+  const FilterRun fixed = RunFilter<Filter>(rounded, [](Filter* f) { f->AutomaticOff(); });
+  const FilterRun automatic = RunFilter<Filter>(rounded);
+  EXPECT_EQ(CellArray(fixed.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_EQ(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  vtkDataArray* fixedCurvature = PointArray(fixed.Output, "Curvature");
+  vtkDataArray* automaticCurvature = PointArray(automatic.Output, "Curvature");
+  ASSERT_EQ(automaticCurvature->GetNumberOfTuples(), fixedCurvature->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < fixedCurvature->GetNumberOfTuples(); ++i)
+  {
+    ASSERT_NEAR(automaticCurvature->GetTuple1(i), fixedCurvature->GetTuple1(i), 1e-12) << i;
+  }
+  const FilterRun exactFixed = RunFilter<Filter>(jittered, [](Filter* f) { f->AutomaticOff(); });
+  const FilterRun exactAutomatic = RunFilter<Filter>(jittered);
+  EXPECT_GE(CellArray(exactFixed.Output, "ShapeViolations")->GetTuple1(0), 3.0);
+  EXPECT_GT(LargestCurvature(exactAutomatic), 1.3 * LargestCurvature(exactFixed));
+}
+} // namespace
+
+TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
+{
+  // Two periods of a sine wave in a tilted plane, written with three
+  // decimals as a PDB file's or a CSV export's coordinates are: their
+  // rounding twists the points either way by up to 1e-3 over segments of
+  // 0.2. Taken as exact, every family's fixed curve failed 4-9 torsion signs
+  // and its default mode bent the curve to 1.4-3.9 times the fixed curve's
+  // largest curvature for them.
+  const double tilt = 0.7, turn = 0.4;
+  const Point u{ std::cos(turn), 0.0, -std::sin(turn) };
+  const Point v{ std::sin(turn) * std::sin(tilt), std::cos(tilt), std::cos(turn) * std::sin(tilt) };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-1e-9, 1e-9);
+  Polyline rounded, jittered;
+  for (int i = 0; i < 80; ++i)
+  {
+    const double t = 4 * Pi * i / 79;
+    Point p = Point{ 3.0, -2.0, 5.0 } + t * u + 1.5 * std::sin(t) * v;
+    for (double& c : p)
+    {
+      c = std::round(1e3 * c) / 1e3;
+    }
+    rounded.push_back(p);
+    jittered.push_back(p + Point{ jitter(random), jitter(random), jitter(random) });
+  }
+  const auto decimals = PolylinesData({ rounded });
+  const auto exact = PolylinesData({ jittered });
+  ASSERT_EQ(shapesplines::coordinateStep(decimals), 1e-3);
+  ASSERT_EQ(shapesplines::coordinateStep(exact), 0.0);
+  {
+    SCOPED_TRACE("generalized cubic");
+    ExpectRoundingIsNoShape<vtkGeneralizedCubicSplineFilter>(decimals, exact);
+  }
+  {
+    SCOPED_TRACE("variable degree");
+    ExpectRoundingIsNoShape<VariableDegree>(decimals, exact);
+  }
+  {
+    SCOPED_TRACE("quintic");
+    ExpectRoundingIsNoShape<Quintic>(decimals, exact);
+  }
+  {
+    SCOPED_TRACE("qqr");
+    ExpectRoundingIsNoShape<QQR>(decimals, exact);
+  }
+}
+
+TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
+{
+  const auto withPoints = [](const std::vector<double>& values, int type) {
+    vtkNew<vtkPoints> points;
+    points->SetDataType(type);
+    for (size_t i = 0; i + 2 < values.size(); i += 3)
+    {
+      points->InsertNextPoint(values[i], values[i + 1], values[i + 2]);
+    }
+    vtkNew<vtkPolyData> data;
+    data->SetPoints(points);
+    return shapesplines::coordinateStep(data);
+  };
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-250.0, 250.0);
+  std::vector<double> values(300);
+  for (double& value : values)
+  {
+    value = coordinate(random);
+  }
+  const auto roundedTo = [&](double step) {
+    std::vector<double> rounded = values;
+    for (double& value : rounded)
+    {
+      value = std::round(value / step) * step;
+    }
+    return rounded;
+  };
+  EXPECT_EQ(withPoints(values, VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints(values, VTK_FLOAT), 0.0);
+  for (const double step : { 1e-2, 1e-3, 1e-4, 1e-6, 1e-9 })
+  {
+    EXPECT_EQ(withPoints(roundedTo(step), VTK_DOUBLE), step) << step;
+  }
+  // A PDB file read as floats (vtkPDBReader): 12.345f is 12.34500027.
+  EXPECT_EQ(withPoints(roundedTo(1e-3), VTK_FLOAT), 1e-3);
+  EXPECT_EQ(withPoints(roundedTo(1e-2), VTK_FLOAT), 1e-2);
+  // Below float's rounding at 250 (3e-5) a float's decimals are not told.
+  EXPECT_EQ(withPoints(roundedTo(1e-5), VTK_FLOAT), 0.0);
+  // Integers and tenths are designed points, taken as exact.
+  EXPECT_EQ(withPoints(roundedTo(1.0), VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints(roundedTo(0.1), VTK_DOUBLE), 0.0);
+  std::vector<double> oneOff = roundedTo(1e-3);
+  oneOff[150] += 1e-7;
+  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), 1e-7);
+  oneOff[150] += Pi * 1e-11; // no decimal step above double's rounding at 250
+  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), 0.0);
+  std::vector<double> notFinite = roundedTo(1e-3);
+  notFinite[7] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(withPoints(notFinite, VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints({}, VTK_DOUBLE), 0.0);
+  vtkNew<vtkPolyData> noPoints;
+  EXPECT_EQ(shapesplines::coordinateStep(noPoints), 0.0);
+  // The aorta's float coordinates, computed: no decimals.
+  EXPECT_EQ(shapesplines::coordinateStep(ReadData("aorta-centerline.vtp")), 0.0);
 }
 
 TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
