@@ -3,6 +3,7 @@
 #include "ExtendedIndex.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace shapesplines
@@ -49,6 +50,13 @@ const char* shapeCriterionName(ShapeCriterion criterion)
       return "unknown";
   }
 }
+
+namespace
+{
+/// A turning sine or triple product of unit segments within this of zero is
+/// zero but for the rounding of its own arithmetic.
+constexpr double ExactlyStraight = 64.0 * std::numeric_limits<double>::epsilon();
+} // namespace
 
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
   const std::vector<double>& vertexNoise, double coordinateNoise, double decimalNoise)
@@ -100,7 +108,10 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     // The most the decimals' rounding can do to it (a bound, not a spread).
     const double roundingTurn = 2.0 * decimalNoise * (1.0 / length[before] + 1.0 / length[i]);
     const bool significant = turn > NoiseSignificance * noiseTurn && turn > roundingTurn;
-    shape.Collinear[i] = straight && unit[before].dot(unit[i]) > 0;
+    // Straight within epsilon_1 by the rounding's chance is no straight run
+    // either; exactly straight is (a run along the decimals' lattice).
+    const bool byChance = roundingTurn > tolerances.Data && turn > ExactlyStraight;
+    shape.Collinear[i] = straight && !byChance && unit[before].dot(unit[i]) > 0;
     shape.Reversal[i] = straight && unit[before].dot(unit[i]) < 0;
     shape.Convex[i] = !straight && significant;
   }
@@ -189,8 +200,9 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const double roundingTwist = twistBy([&](int) { return 2.0 * decimalNoise; });
     const bool significant =
       std::abs(triple) > NoiseSignificance * noiseTwist && std::abs(triple) > roundingTwist;
+    const bool byChance = roundingTwist > tolerances.Data && std::abs(triple) > ExactlyStraight;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
-    shape.Coplanar[i] = flat;
+    shape.Coplanar[i] = flat && !byChance;
     shape.Twisted[i] = !flat && significant;
   }
   // Where the segments on either side of one twist opposite ways, the

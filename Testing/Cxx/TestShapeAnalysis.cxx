@@ -338,6 +338,22 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
     EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, moved).Convex[1], factor > 1.0) << factor;
     EXPECT_TRUE(discreteShape(turn).Convex[1]) << factor;
   }
+
+  // Straight or planar within epsilon_1 by the rounding's chance is no
+  // straight run and no plane either (no criterion); exactly, it still is
+  // (points 3, 6 and 9 of the run above lie on its decimals' lattice line).
+  const std::vector<Vec3> bent{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 5e-7, 0), Vec3(3, 1, 0),
+    Vec3(4, 1.5, 3e-7) };
+  const DiscreteShape exactBent = discreteShape(cleanPolyline(bent, false));
+  const DiscreteShape roundedBent = discreteShape(cleanPolyline(bent, false), {}, {}, 0.0, moved);
+  EXPECT_TRUE(exactBent.Collinear[1]);
+  EXPECT_FALSE(roundedBent.Collinear[1] || roundedBent.Convex[1]);
+  EXPECT_TRUE(exactBent.Coplanar[2]);
+  EXPECT_FALSE(roundedBent.Coplanar[2] || roundedBent.Twisted[2]);
+  for (const int i : { 3, 6, 9 })
+  {
+    EXPECT_TRUE(roundedRun.Collinear[i]) << i;
+  }
 }
 
 TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
