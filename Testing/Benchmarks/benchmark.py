@@ -483,7 +483,10 @@ def noise_sweep_lines(rng):
     amplitude, frequency and phase) 40-80 units across, 80-300 points at
     uneven steps (random sorted parameters, or steps varying 0.3-1.7x), noise
     of 0.05%, 0.1% and 0.2% of the diagonal, rounded to float as a
-    segmentation's centerline is (the aorta in Data/)."""
+    segmentation's centerline is (the aorta in Data/); and 60 planar curves
+    (sine waves, spirals, ellipse arcs; 40-200 points at random parameters,
+    1-300 units across) in random tilted planes, written with three decimals
+    as a PDB file's or a CSV export's coordinates are."""
     def rotated(xyz):
         q, _ = np.linalg.qr(rng.normal(size=(3, 3)))
         return xyz @ q.T
@@ -530,6 +533,20 @@ def noise_sweep_lines(rng):
         noisy = xyz + rng.normal(0, (0.0005, 0.001, 0.002)[i % 3] * diagonal, xyz.shape)
         centerlines.append(noisy.astype(np.float32).astype(float))
     sets["centerline-like"] = centerlines
+    planar = []
+    for i in range(60):
+        count = int(rng.integers(40, 200))
+        t = np.sort(rng.uniform(0, 1, count))
+        if i % 3 == 0:
+            curve = np.column_stack([4 * np.pi * t, rng.uniform(0.5, 2) * np.sin(4 * np.pi * t)])
+        elif i % 3 == 1:
+            radius = 1 + 2 * np.pi * t
+            curve = np.column_stack([radius * np.cos(6 * np.pi * t), radius * np.sin(6 * np.pi * t)])
+        else:
+            curve = np.column_stack([3 * np.cos(1.7 * np.pi * t), np.sin(1.7 * np.pi * t)])
+        xyz = np.column_stack([curve, np.zeros(count)]) * 10 ** rng.uniform(0, 2.5) / np.ptp(curve, axis=0).max()
+        planar.append(np.round(rotated(xyz) + rng.uniform(-100, 100, 3), 3))
+    sets["planar, 3 decimals"] = planar
     return sets
 
 
@@ -540,9 +557,10 @@ def shape_on_a_noise_sweep(seed=41):
     input, 2 threads)."""
     sets = noise_sweep_lines(np.random.default_rng(seed))
     print("\nShape on a sweep of noisy lines (25-200 points, 0.1-1% noise of the diagonal, 10 lines each) and "
-          "staircases turning 20-160 degrees in 3D, and centerline-like lines (80-300 uneven points, 0.05-0.2% noise), "
+          "staircases turning 20-160 degrees in 3D, centerline-like lines (80-300 uneven points, 0.05-0.2% noise) "
+          "and planar curves in tilted planes at three decimals, "
           "every family's default mode against its fixed mode:")
-    print("%-9s %-15s %7s %22s %13s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
+    print("%-9s %-18s %7s %22s %13s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
                                                  "lines left", "curvature / data's", "cost"))
     for family, proxy, automatic in FAMILIES[1:]:
         for kind, lines in sets.items():
@@ -551,7 +569,7 @@ def shape_on_a_noise_sweep(seed=41):
             output = figures["auto output"]
             left = int((cell_array(output, "ShapeViolations") > 0).sum())
             ratio = max(k / discrete_curvature(xyz) for k, xyz in zip(line_curvatures(output), lines))
-            print("%-9s %-15s %7d %22s %13d %20.3g %7.1fx" % (
+            print("%-9s %-18s %7d %22s %13d %20.3g %7.1fx" % (
                 family, kind, len(lines), "%d / %d" % (figures["fixed violations"], figures["auto violations"]),
                 left, ratio, figures["auto"] / figures["fixed"]))
 
