@@ -186,9 +186,9 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     // not coplanar at the audit's resolution. Nor where the planes turn by
     // a little less: the binormal of a curve through them turns by as much
     // along the span, and the audit would fail it.
-    const bool flat = (std::abs(triple) <= tolerances.Data &&
-                        std::abs(triple) <= CoplanarPlaneTurn * tolerances.Curve * crosses) ||
-      !(crosses > 0);
+    const double flatness =
+      std::min(tolerances.Data, CoplanarPlaneTurn * tolerances.Curve * crosses);
+    const bool flat = std::abs(triple) <= flatness || !(crosses > 0);
     // What the vertices' noise can do to the triple product: each of the
     // three directions turns by about noise / length out of the others' plane.
     auto twistBy = [&](const auto& moved) {
@@ -200,7 +200,12 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const double roundingTwist = twistBy([&](int) { return 2.0 * decimalNoise; });
     const bool significant =
       std::abs(triple) > NoiseSignificance * noiseTwist && std::abs(triple) > roundingTwist;
-    const bool byChance = roundingTwist > tolerances.Data && std::abs(triple) > ExactlyStraight;
+    // Planar within the flatness by chance where the rounding (of the
+    // decimals, or of floats: short segments far from the origin) can move
+    // the triple product beyond it.
+    const double floatTwist = twistBy([&](int) { return 2.0 * coordinateNoise; });
+    const bool byChance =
+      std::max(roundingTwist, floatTwist) > flatness && std::abs(triple) > ExactlyStraight;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat && !byChance;
     shape.Twisted[i] = !flat && significant;

@@ -354,6 +354,13 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   {
     EXPECT_TRUE(roundedRun.Collinear[i]) << i;
   }
+  // Float rounding of short segments far from the origin makes such planes
+  // by chance too (the aorta's floats: a triple product of 1.3e-7 where
+  // rounding moves it by 1e-4); its straight runs are not questioned (float
+  // tool paths off the axes would lose theirs).
+  const DiscreteShape floatBent = discreteShape(cleanPolyline(bent, false), {}, {}, moved);
+  EXPECT_FALSE(floatBent.Coplanar[2] || floatBent.Twisted[2]);
+  EXPECT_TRUE(floatBent.Collinear[1]);
 }
 
 TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
