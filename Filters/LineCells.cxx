@@ -130,7 +130,7 @@ double coordinatePrecision(vtkPolyData* polyData)
   }
   return floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
 }
-double coordinateStep(vtkPolyData* polyData)
+double coordinateStep(vtkPolyData* polyData, double precision)
 {
   vtkPoints* points = polyData->GetPoints();
   if (!points || points->GetNumberOfPoints() == 0)
@@ -147,7 +147,6 @@ double coordinateStep(vtkPolyData* polyData)
     }
     largest = std::max(largest, std::abs(value));
   }
-  const double precision = coordinatePrecision(polyData);
   // A step is tested only well above the type's rounding, so that a value
   // off the step by that rounding is told from one off by chance (at most an
   // eighth of the step either way: a quarter of random values pass each).

@@ -62,12 +62,12 @@ double coordinatePrecision(vtkPolyData* polyData);
 
 /// The decimal step of polyData's point coordinates: 10^-d for the fewest
 /// digits d >= 2 after the decimal point that every coordinate has (to within
-/// the rounding of its type: 12.345 read as a float has three), 0 when they
+/// precision, their coordinatePrecision: 12.345 read as a float has three), 0 when they
 /// need more digits than their type holds, or none (integers, tenths: designed
 /// points, taken as exact). Text formats round coordinates to a fixed number
 /// of decimals (PDB files to 1e-3 angstrom, CSV exports), and a turn or twist
 /// within that rounding is no shape to keep.
-double coordinateStep(vtkPolyData* polyData);
+double coordinateStep(vtkPolyData* polyData, double precision);
 } // namespace shapesplines
 
 #endif

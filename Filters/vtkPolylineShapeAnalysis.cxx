@@ -439,7 +439,7 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   // As the curve filters do: a turn or twist within the rounding of float
   // input, or of coordinates written with few decimals, is no shape.
   const double precision = shapesplines::coordinatePrecision(input);
-  const double decimalNoise = 0.5 * std::sqrt(3.0) * shapesplines::coordinateStep(input);
+  const double step = shapesplines::coordinateStep(input, precision);
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
@@ -451,7 +451,7 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
       largest = std::max(largest, p.cwiseAbs().maxCoeff());
     }
     const auto shape =
-      shapesplines::discreteShape(data, tolerances, {}, precision * largest, decimalNoise);
+      shapesplines::discreteShape(data, tolerances, {}, precision * largest, step);
     if (finite)
     {
       discrete.Write(lines[l].PointIds, data, shape);

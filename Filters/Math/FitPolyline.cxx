@@ -387,7 +387,7 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 ProgressPart::ProgressPart(const FitContext& whole, double from, double to)
   : Options(whole.Options)
   , Context{ whole.Data, whole.Knots, this->Options, whole.CoordinateNoise, whole.PointValues,
-      whole.DecimalNoise }
+      whole.DecimalStep }
 {
   this->Options.Progress = progressWithin(whole.Options.Progress, from, to);
 }
@@ -397,7 +397,7 @@ ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
 {
   return auditCurve(curve, reference,
     discreteShape(reference, this->Options.Tolerances, referenceNoise, this->CoordinateNoise,
-      this->DecimalNoise),
+      this->DecimalStep),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
 }
@@ -604,8 +604,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   }
   fit.CoordinateNoise = options.CoordinatePrecision *
     std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) / fit.Scale;
-  // Each coordinate rounded by up to half the step: a point by up to sqrt(3) / 2 of it.
-  fit.DecimalNoise = 0.5 * std::sqrt(3.0) * options.CoordinateStep / fit.Scale;
+  fit.DecimalStep = options.CoordinateStep / fit.Scale;
   for (Vec3& p : fit.Data.Points)
   {
     p = (p - fit.Origin) / fit.Scale;
@@ -644,7 +643,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
       values.push_back(pointValues[fit.Data.SourceIndex[i]]);
     }
     built = build(
-      FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values, fit.DecimalNoise });
+      FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values, fit.DecimalStep });
   }
   fit.Spline = std::move(built.Spline);
   fit.ShapeReference = std::move(built.ShapeReference);
@@ -656,7 +655,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.StarvedSpan = built.StarvedSpan;
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
   fit.Shape = discreteShape(
-    reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise, fit.DecimalNoise);
+    reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise, fit.DecimalStep);
   fit.LooksNoisy = !fit.ShapeReference && !mostlyStraightRuns(fit.Shape) &&
     looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   fit.Audit = built.Audit ? *std::move(built.Audit)

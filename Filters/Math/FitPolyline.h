@@ -47,9 +47,8 @@ struct FitContext
   double CoordinateNoise = 0.0;
   /// A user's value per cleaned point (e.g. a starting tension), or empty.
   const std::vector<double>& PointValues;
-  /// How far the rounding of coordinates written with few decimals
-  /// (FitOptions::CoordinateStep) can move a point, normalised (see discreteShape).
-  double DecimalNoise = 0.0;
+  /// FitOptions::CoordinateStep, normalised (see discreteShape).
+  double DecimalStep = 0.0;
 
   /// The audit of a curve against the Definition 1 shape of reference, a
   /// polygon with one vertex per knot of the curve: the data for an
@@ -121,7 +120,7 @@ struct FittedPolyline
   double ParameterScale = 1.0;  ///< data-unit parameter per normalised parameter
   std::vector<Vec3> KnotPoints; ///< the cleaned points in input coordinates
   double CoordinateNoise = 0.0; ///< rounding of the input coordinates, normalised
-  double DecimalNoise = 0.0;    ///< rounding of their decimals, normalised (see FitContext)
+  double DecimalStep = 0.0;     ///< their decimals' step, normalised (see FitContext)
   /// Normalised parameter of each cleaned point (for an approximation, where
   /// it sits on the curve: corrected, see planApproximation).
   std::vector<double> Knots;

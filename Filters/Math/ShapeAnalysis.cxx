@@ -59,8 +59,10 @@ constexpr double ExactlyStraight = 64.0 * std::numeric_limits<double>::epsilon()
 } // namespace
 
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
-  const std::vector<double>& vertexNoise, double coordinateNoise, double decimalNoise)
+  const std::vector<double>& vertexNoise, double coordinateNoise, double decimalStep)
 {
+  // Each coordinate rounded by up to half the step: a point by up to sqrt(3) / 2 of it.
+  const double decimalNoise = 0.5 * std::sqrt(3.0) * decimalStep;
   const int n = static_cast<int>(data.Points.size());
   // How far segment i's direction turns with its vertices' noise, times its length.
   auto noise = [&](int i) { return std::max(vertexNoise.empty() ? 0.0 : vertexNoise[i], coordinateNoise); };

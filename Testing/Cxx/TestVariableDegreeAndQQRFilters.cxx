@@ -745,6 +745,12 @@ TEST(AutomaticShapeFilters, FloatPointsConvertedToDoubleKeepTheirRounding)
 
 namespace
 {
+/// The decimal step of data's coordinates, as the filters read it.
+double StepOf(vtkPolyData* data)
+{
+  return shapesplines::coordinateStep(data, shapesplines::coordinatePrecision(data));
+}
+
 /// The largest curvature of a run's output.
 double LargestCurvature(const FilterRun& run)
 {
@@ -804,8 +810,8 @@ TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
   }
   const auto decimals = PolylinesData({ rounded });
   const auto exact = PolylinesData({ jittered });
-  ASSERT_EQ(shapesplines::coordinateStep(decimals), 1e-3);
-  ASSERT_EQ(shapesplines::coordinateStep(exact), 0.0);
+  ASSERT_EQ(StepOf(decimals), 1e-3);
+  ASSERT_EQ(StepOf(exact), 0.0);
   {
     SCOPED_TRACE("generalized cubic");
     ExpectRoundingIsNoShape<vtkGeneralizedCubicSplineFilter>(decimals, exact);
@@ -835,7 +841,7 @@ TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
     }
     vtkNew<vtkPolyData> data;
     data->SetPoints(points);
-    return shapesplines::coordinateStep(data);
+    return StepOf(data);
   };
   std::mt19937 random(11);
   std::uniform_real_distribution<double> coordinate(-250.0, 250.0);
@@ -876,9 +882,9 @@ TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
   EXPECT_EQ(withPoints(notFinite, VTK_DOUBLE), 0.0);
   EXPECT_EQ(withPoints({}, VTK_DOUBLE), 0.0);
   vtkNew<vtkPolyData> noPoints;
-  EXPECT_EQ(shapesplines::coordinateStep(noPoints), 0.0);
+  EXPECT_EQ(StepOf(noPoints), 0.0);
   // The aorta's float coordinates, computed: no decimals.
-  EXPECT_EQ(shapesplines::coordinateStep(ReadData("aorta-centerline.vtp")), 0.0);
+  EXPECT_EQ(StepOf(ReadData("aorta-centerline.vtp")), 0.0);
 }
 
 TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
