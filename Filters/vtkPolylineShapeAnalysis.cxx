@@ -437,9 +437,10 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   tolerances.Data = this->DataShapeTolerance;
   tolerances.Curve = this->CurveShapeTolerance;
   // As the curve filters do: a turn or twist within the rounding of float
-  // input, or of coordinates written with few decimals, is no shape.
+  // input, or of coordinates written with few digits, is no shape.
   const double precision = shapesplines::coordinatePrecision(input);
-  const double step = shapesplines::coordinateStep(input, precision);
+  const double reach =
+    shapesplines::roundingReach(shapesplines::coordinateSteps(input, precision));
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
@@ -451,7 +452,7 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
       largest = std::max(largest, p.cwiseAbs().maxCoeff());
     }
     const auto shape =
-      shapesplines::discreteShape(data, tolerances, {}, precision * largest, step);
+      shapesplines::discreteShape(data, tolerances, {}, precision * largest, reach);
     if (finite)
     {
       discrete.Write(lines[l].PointIds, data, shape);

@@ -1270,7 +1270,8 @@ shapesplines::FitOptions vtkShapeSplineFilter::BuildFitOptions(vtkPolyData* inpu
   options.Tolerances.Data = this->DataShapeTolerance;
   options.Tolerances.Curve = this->CurveShapeTolerance;
   options.CoordinatePrecision = shapesplines::coordinatePrecision(input);
-  options.CoordinateStep = shapesplines::coordinateStep(input, options.CoordinatePrecision);
+  options.CoordinateReach = shapesplines::roundingReach(
+    shapesplines::coordinateSteps(input, options.CoordinatePrecision));
   return options;
 }
 

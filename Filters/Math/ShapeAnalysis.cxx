@@ -59,10 +59,8 @@ constexpr double ExactlyStraight = 64.0 * std::numeric_limits<double>::epsilon()
 } // namespace
 
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
-  const std::vector<double>& vertexNoise, double coordinateNoise, double decimalStep)
+  const std::vector<double>& vertexNoise, double coordinateNoise, double roundingReach)
 {
-  // Each coordinate rounded by up to half the step: a point by up to sqrt(3) / 2 of it.
-  const double decimalNoise = 0.5 * std::sqrt(3.0) * decimalStep;
   const int n = static_cast<int>(data.Points.size());
   // How far segment i's direction turns with its vertices' noise, times its length.
   auto noise = [&](int i) { return std::max(vertexNoise.empty() ? 0.0 : vertexNoise[i], coordinateNoise); };
@@ -108,7 +106,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     // What the vertices' noise can do to the turning sine: both directions turn.
     const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
     // The most the decimals' rounding can do to it (a bound, not a spread).
-    const double roundingTurn = 2.0 * decimalNoise * (1.0 / length[before] + 1.0 / length[i]);
+    const double roundingTurn = 2.0 * roundingReach * (1.0 / length[before] + 1.0 / length[i]);
     const bool significant = turn > NoiseSignificance * noiseTurn && turn > roundingTurn;
     // Straight within epsilon_1 by the rounding's chance is no straight run
     // either; exactly straight is (a run along the decimals' lattice).
@@ -199,7 +197,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
         a.cross(b).norm() * moved(next) / length[next];
     };
     const double noiseTwist = twistBy(segmentNoise);
-    const double roundingTwist = twistBy([&](int) { return 2.0 * decimalNoise; });
+    const double roundingTwist = twistBy([&](int) { return 2.0 * roundingReach; });
     const bool significant =
       std::abs(triple) > NoiseSignificance * noiseTwist && std::abs(triple) > roundingTwist;
     // Planar within the flatness by chance where the rounding (of the

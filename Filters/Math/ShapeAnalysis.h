@@ -68,9 +68,9 @@ struct DiscreteShape
  * data's units (FitContext::CoordinateNoise), is every vertex's least noise:
  * float coordinates leave a segment of 1e-4 of the diagonal a direction
  * known to about 0.1, and a turn or twist within that is no shape to keep.
- * decimalStep, the step of coordinates written with few decimals in the
- * data's units (FitContext::DecimalStep), moves each point by up to
- * sqrt(3) / 2 of it: a bound, not a spread. A turn or twist counts only
+ * roundingReach, the most the rounding of coordinates written with few
+ * digits moves a point, in the data's units (FitContext::RoundingReach): a
+ * bound, not a spread. A turn or twist counts only
  * beyond the most that rounding can make of it (a straight run or a plane given to three decimals turns and
  * twists by their rounding, either way, and keeping those signs bent the
  * curve), while the small turns of data given to a few decimals above that
@@ -78,7 +78,7 @@ struct DiscreteShape
  */
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
   const std::vector<double>& vertexNoise = {}, double coordinateNoise = 0.0,
-  double decimalStep = 0.0);
+  double roundingReach = 0.0);
 
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).

@@ -315,12 +315,12 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   }
   const CleanPolyline straight = cleanPolyline(run, false);
   const DiscreteShape exactRun = discreteShape(straight);
-  const DiscreteShape roundedRun = discreteShape(straight, {}, {}, 0.0, step);
+  const DiscreteShape roundedRun = discreteShape(straight, {}, {}, 0.0, moved);
   EXPECT_GE(std::count(exactRun.Convex.begin(), exactRun.Convex.end(), 1), 5);
   EXPECT_EQ(std::count(roundedRun.Convex.begin(), roundedRun.Convex.end(), 1), 0);
   const CleanPolyline strand = cleanPolyline(zigzag, false);
   const DiscreteShape exactStrand = discreteShape(strand);
-  const DiscreteShape roundedStrand = discreteShape(strand, {}, {}, 0.0, step);
+  const DiscreteShape roundedStrand = discreteShape(strand, {}, {}, 0.0, moved);
   EXPECT_GE(std::count(exactStrand.Twisted.begin(), exactStrand.Twisted.end(), 1), 6);
   EXPECT_EQ(std::count(roundedStrand.Twisted.begin(), roundedStrand.Twisted.end(), 1), 0);
   EXPECT_EQ(roundedStrand.Convex, exactStrand.Convex);
@@ -335,7 +335,7 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
     const double y = factor * bound; // sine of the turn, to 1e-5 of itself
     const CleanPolyline turn =
       cleanPolyline({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, y, 0) }, false);
-    EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, step).Convex[1], factor > 1.0) << factor;
+    EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, moved).Convex[1], factor > 1.0) << factor;
     EXPECT_TRUE(discreteShape(turn).Convex[1]) << factor;
   }
 
@@ -345,7 +345,7 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   const std::vector<Vec3> bent{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 5e-7, 0), Vec3(3, 1, 0),
     Vec3(4, 1.5, 3e-7) };
   const DiscreteShape exactBent = discreteShape(cleanPolyline(bent, false));
-  const DiscreteShape roundedBent = discreteShape(cleanPolyline(bent, false), {}, {}, 0.0, step);
+  const DiscreteShape roundedBent = discreteShape(cleanPolyline(bent, false), {}, {}, 0.0, moved);
   EXPECT_TRUE(exactBent.Collinear[1]);
   EXPECT_FALSE(roundedBent.Collinear[1] || roundedBent.Convex[1]);
   EXPECT_TRUE(exactBent.Coplanar[2]);

@@ -18,7 +18,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <random>
 
@@ -745,10 +748,41 @@ TEST(AutomaticShapeFilters, FloatPointsConvertedToDoubleKeepTheirRounding)
 
 namespace
 {
-/// The decimal step of data's coordinates, as the filters read it.
-double StepOf(vtkPolyData* data)
+using Steps = std::array<double, 3>;
+
+/// The steps data's coordinates were written with, as the filters read them.
+Steps StepsOf(vtkPolyData* data)
 {
-  return shapesplines::coordinateStep(data, shapesplines::coordinatePrecision(data));
+  return shapesplines::coordinateSteps(data, shapesplines::coordinatePrecision(data));
+}
+
+/// The same step on every axis.
+Steps Each(double step)
+{
+  return { step, step, step };
+}
+
+/// Poly data of points (x, y, z, x, ...) of a type, without cells.
+vtkSmartPointer<vtkPolyData> PointsData(const std::vector<double>& values, int type)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataType(type);
+  for (size_t i = 0; i + 2 < values.size(); i += 3)
+  {
+    points->InsertNextPoint(values[i], values[i + 1], values[i + 2]);
+  }
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  data->SetPoints(points);
+  return data;
+}
+
+/// value as a text format writes it with `digits` significant digits
+/// ("%.5e", ParaView's CSV export, has six) and a reader reads it back.
+double WrittenWith(double value, int digits)
+{
+  char text[40];
+  std::snprintf(text, sizeof(text), "%.*e", digits - 1, value);
+  return std::strtod(text, nullptr);
 }
 
 /// The largest curvature of a run's output.
@@ -810,8 +844,8 @@ TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
   }
   const auto decimals = PolylinesData({ rounded });
   const auto exact = PolylinesData({ jittered });
-  ASSERT_EQ(StepOf(decimals), 1e-3);
-  ASSERT_EQ(StepOf(exact), 0.0);
+  ASSERT_EQ(StepsOf(decimals), Each(1e-3));
+  ASSERT_EQ(StepsOf(exact), Each(0.0));
   {
     SCOPED_TRACE("generalized cubic");
     ExpectRoundingIsNoShape<vtkGeneralizedCubicSplineFilter>(decimals, exact);
@@ -830,18 +864,83 @@ TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
   }
 }
 
+namespace
+{
+/// Filter's default mode on points whose turns are within the rounding of
+/// their significant digits: no violation left, the fixed curve's largest
+/// curvature kept; few for the fixed curve. The same values jittered off
+/// their digits, taken as exact: more for the fixed curve, and the default
+/// mode bends the curve to keep them.
+template <class Filter>
+void ExpectSignificantDigitsAreNoShape(vtkPolyData* rounded, vtkPolyData* jittered)
+{
+  const FilterRun fixed = RunFilter<Filter>(rounded, [](Filter* f) { f->AutomaticOff(); });
+  const FilterRun automatic = RunFilter<Filter>(rounded);
+  const FilterRun exactFixed = RunFilter<Filter>(jittered, [](Filter* f) { f->AutomaticOff(); });
+  const FilterRun exactAutomatic = RunFilter<Filter>(jittered);
+  const double violations = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(0);
+  EXPECT_LE(4.0 * violations, CellArray(exactFixed.Output, "ShapeViolations")->GetTuple1(0));
+  EXPECT_EQ(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_LT(LargestCurvature(automatic), 1.05 * LargestCurvature(fixed));
+  EXPECT_GT(LargestCurvature(exactAutomatic), 3.0 * LargestCurvature(exactFixed));
+}
+} // namespace
+
+TEST(AutomaticShapeFilters, ATurnWithinTheSignificantDigitsOfTheCoordinatesIsNoShape)
+{
+  // The tilted sine wave, 400 points across x = 3..15 (segments of 0.045),
+  // written with six significant digits as ParaView's CSV export writes them
+  // ("%.5e"): a step of 1e-5 below x = 10, 1e-4 above. Taken as exact, the
+  // fixed curves failed 25-29 criteria and the default modes bent the curve
+  // to 5-650 times the fixed curve's largest curvature for them.
+  const double tilt = 0.7, turn = 0.4;
+  const Point u{ std::cos(turn), 0.0, -std::sin(turn) };
+  const Point v{ std::sin(turn) * std::sin(tilt), std::cos(tilt), std::cos(turn) * std::sin(tilt) };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> jitter(-1e-12, 1e-12);
+  Polyline rounded, jittered;
+  constexpr int Points = 400;
+  for (int i = 0; i < Points; ++i)
+  {
+    const double t = 4 * Pi * i / (Points - 1);
+    Point p = Point{ 3.0, -2.0, 5.0 } + t * u + 1.5 * std::sin(t) * v;
+    for (double& c : p)
+    {
+      c = WrittenWith(c, 6);
+    }
+    rounded.push_back(p);
+    for (double& c : p)
+    {
+      c += jitter(random) * std::abs(c);
+    }
+    jittered.push_back(p);
+  }
+  const auto digits = PolylinesData({ rounded });
+  const auto exact = PolylinesData({ jittered });
+  ASSERT_EQ(StepsOf(digits), (Steps{ 1e-4, 1e-5, 1e-5 }));
+  ASSERT_EQ(StepsOf(exact), Each(0.0));
+  {
+    SCOPED_TRACE("generalized cubic");
+    ExpectSignificantDigitsAreNoShape<vtkGeneralizedCubicSplineFilter>(digits, exact);
+  }
+  {
+    SCOPED_TRACE("variable degree");
+    ExpectSignificantDigitsAreNoShape<VariableDegree>(digits, exact);
+  }
+  {
+    SCOPED_TRACE("quintic");
+    ExpectSignificantDigitsAreNoShape<Quintic>(digits, exact);
+  }
+  {
+    SCOPED_TRACE("qqr");
+    ExpectSignificantDigitsAreNoShape<QQR>(digits, exact);
+  }
+}
+
 TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
 {
   const auto withPoints = [](const std::vector<double>& values, int type) {
-    vtkNew<vtkPoints> points;
-    points->SetDataType(type);
-    for (size_t i = 0; i + 2 < values.size(); i += 3)
-    {
-      points->InsertNextPoint(values[i], values[i + 1], values[i + 2]);
-    }
-    vtkNew<vtkPolyData> data;
-    data->SetPoints(points);
-    return StepOf(data);
+    return StepsOf(PointsData(values, type));
   };
   std::mt19937 random(11);
   std::uniform_real_distribution<double> coordinate(-250.0, 250.0);
@@ -858,33 +957,105 @@ TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
     }
     return rounded;
   };
-  EXPECT_EQ(withPoints(values, VTK_DOUBLE), 0.0);
-  EXPECT_EQ(withPoints(values, VTK_FLOAT), 0.0);
+  EXPECT_EQ(withPoints(values, VTK_DOUBLE), Each(0.0));
+  EXPECT_EQ(withPoints(values, VTK_FLOAT), Each(0.0));
   for (const double step : { 1e-2, 1e-3, 1e-4, 1e-6, 1e-9 })
   {
-    EXPECT_EQ(withPoints(roundedTo(step), VTK_DOUBLE), step) << step;
+    EXPECT_EQ(withPoints(roundedTo(step), VTK_DOUBLE), Each(step)) << step;
   }
   // A PDB file read as floats (vtkPDBReader): 12.345f is 12.34500027.
-  EXPECT_EQ(withPoints(roundedTo(1e-3), VTK_FLOAT), 1e-3);
-  EXPECT_EQ(withPoints(roundedTo(1e-2), VTK_FLOAT), 1e-2);
+  EXPECT_EQ(withPoints(roundedTo(1e-3), VTK_FLOAT), Each(1e-3));
+  EXPECT_EQ(withPoints(roundedTo(1e-2), VTK_FLOAT), Each(1e-2));
   // Below float's rounding at 250 (3e-5) a float's decimals are not told.
-  EXPECT_EQ(withPoints(roundedTo(1e-5), VTK_FLOAT), 0.0);
+  EXPECT_EQ(withPoints(roundedTo(1e-5), VTK_FLOAT), Each(0.0));
   // Integers and tenths are designed points, taken as exact.
-  EXPECT_EQ(withPoints(roundedTo(1.0), VTK_DOUBLE), 0.0);
-  EXPECT_EQ(withPoints(roundedTo(0.1), VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints(roundedTo(1.0), VTK_DOUBLE), Each(0.0));
+  EXPECT_EQ(withPoints(roundedTo(0.1), VTK_DOUBLE), Each(0.0));
   std::vector<double> oneOff = roundedTo(1e-3);
-  oneOff[150] += 1e-7;
-  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), 1e-7);
+  oneOff[150] += 1e-7; // an x
+  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), (Steps{ 1e-7, 1e-3, 1e-3 }));
   oneOff[150] += Pi * 1e-11; // no decimal step above double's rounding at 250
-  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints(oneOff, VTK_DOUBLE), (Steps{ 0.0, 1e-3, 1e-3 }));
   std::vector<double> notFinite = roundedTo(1e-3);
   notFinite[7] = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_EQ(withPoints(notFinite, VTK_DOUBLE), 0.0);
-  EXPECT_EQ(withPoints({}, VTK_DOUBLE), 0.0);
+  EXPECT_EQ(withPoints(notFinite, VTK_DOUBLE), Each(0.0));
+  EXPECT_EQ(withPoints({}, VTK_DOUBLE), Each(0.0));
   vtkNew<vtkPolyData> noPoints;
-  EXPECT_EQ(StepOf(noPoints), 0.0);
+  EXPECT_EQ(StepsOf(noPoints), Each(0.0));
   // The aorta's float coordinates, computed: no decimals.
-  EXPECT_EQ(StepOf(ReadData("aorta-centerline.vtp")), 0.0);
+  EXPECT_EQ(StepsOf(ReadData("aorta-centerline.vtp")), Each(0.0));
+}
+
+TEST(AutomaticShapeFilters, TheCoordinatesSignificantDigitsAreTheirRounding)
+{
+  // Values across five decades, written with s significant digits: each
+  // coordinate's step is that of its largest values (50..100: 10^(1 - s + 1)).
+  std::mt19937 random(12);
+  std::uniform_real_distribution<double> decade(-3.0, 2.0);
+  std::uniform_int_distribution<int> sign(0, 1);
+  std::vector<double> values(300);
+  for (double& value : values)
+  {
+    value = (sign(random) ? 1.0 : -1.0) * std::pow(10.0, decade(random));
+  }
+  values[0] = 99.0; // the largest values have two digits before the point
+  for (const int digits : { 4, 6, 9, 12 })
+  {
+    std::vector<double> written = values;
+    for (double& value : written)
+    {
+      value = WrittenWith(value, digits);
+    }
+    EXPECT_EQ(StepsOf(PointsData(written, VTK_DOUBLE)), Each(std::pow(10.0, 2 - digits)))
+      << digits;
+  }
+  // Three decimals of numbers across decades also fit as many significant
+  // digits as the largest values have, which fewer values use.
+  std::vector<double> decimals = values;
+  for (double& value : decimals)
+  {
+    value = std::round(value * 1e3) / 1e3;
+  }
+  EXPECT_EQ(StepsOf(PointsData(decimals, VTK_DOUBLE)), Each(1e-3));
+  // A designed column beside a measured one (the titanium data: integer
+  // temperatures, values to three decimals) and a constant one: each its own.
+  std::vector<double> columns;
+  for (int i = 0; i < 49; ++i)
+  {
+    columns.insert(columns.end(), { 595.0 + 10 * i, std::round(1e3 * std::abs(values[i])) / 1e3, 0.0 });
+  }
+  EXPECT_EQ(StepsOf(PointsData(columns, VTK_DOUBLE)), (Steps{ 0.0, 1e-3, 0.0 }));
+}
+
+TEST(AutomaticShapeFilters, FloatsWrittenAsTextAreFloats)
+{
+  // A float file's points written with the 9 significant digits that keep
+  // each float ("%.9g") and read back as doubles have the floats' rounding.
+  std::mt19937 random(13);
+  std::uniform_real_distribution<double> coordinate(-250.0, 250.0);
+  std::vector<double> floats(300), doubles(300);
+  for (size_t i = 0; i < floats.size(); ++i)
+  {
+    const double value = coordinate(random);
+    floats[i] = WrittenWith(static_cast<float>(value), 9);
+    doubles[i] = WrittenWith(value, 9);
+  }
+  const auto precisionOf = [](const std::vector<double>& values) {
+    return shapesplines::coordinatePrecision(PointsData(values, VTK_DOUBLE));
+  };
+  EXPECT_EQ(precisionOf(floats), std::numeric_limits<float>::epsilon());
+  // Doubles written so fall within half a 9th digit of a float one time in ten.
+  EXPECT_EQ(precisionOf(doubles), std::numeric_limits<double>::epsilon());
+  // Below a float's 9 digits, or one value that is no float's: doubles.
+  std::vector<double> longer = floats, oneOff = floats;
+  for (size_t i = 0; i < longer.size(); ++i)
+  {
+    longer[i] = WrittenWith(doubles[i], 12);
+  }
+  EXPECT_EQ(precisionOf(longer), std::numeric_limits<double>::epsilon());
+  oneOff[100] = doubles[100];
+  EXPECT_EQ(precisionOf(oneOff), std::numeric_limits<double>::epsilon());
+  EXPECT_EQ(precisionOf({}), std::numeric_limits<double>::epsilon());
 }
 
 TEST(QQRSplineFilter, FrenetContinuityAndItsWarnings)
