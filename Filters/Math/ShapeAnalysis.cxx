@@ -75,6 +75,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
   shape.Torsion.assign(std::max(spans, 0), 0.0);
   shape.Coplanar.assign(std::max(spans, 0), 0);
   shape.Twisted.assign(std::max(spans, 0), 0);
+  std::vector<char> latticePlane(std::max(spans, 0), 0); // coplanar only by being exactly so
   auto interior = [&](int i) { return data.Closed || (i > 0 && i < n - 1); };
 
   // Unit segments and lengths by stableNorm: products of raw lengths under- or
@@ -204,11 +205,30 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     // decimals, or of floats: short segments far from the origin) can move
     // the triple product beyond it.
     const double floatTwist = twistBy([&](int) { return 2.0 * coordinateNoise; });
-    const bool byChance =
-      std::max(roundingTwist, floatTwist) > flatness && std::abs(triple) > ExactlyStraight;
+    const bool roundingCanTwist = std::max(roundingTwist, floatTwist) > flatness;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
-    shape.Coplanar[i] = flat && !byChance;
+    shape.Coplanar[i] = flat && (!roundingCanTwist || std::abs(triple) <= ExactlyStraight);
+    latticePlane[i] = shape.Coplanar[i] && roundingCanTwist;
     shape.Twisted[i] = !flat && significant;
+  }
+  // Rounded points are exactly coplanar by the rounding too: where one
+  // coordinate rounds to the same value over a few points (near its
+  // extremum) or their second differences round alike. On smooth curves
+  // written with six significant digits one segment in twenty was, in runs
+  // of up to 7; a designed plane (a z-level of a tool path) holds more.
+  constexpr int DesignedPlaneSegments = 8;
+  for (int i = 0; i < spans;)
+  {
+    int end = i;
+    while (end < spans && latticePlane[end])
+    {
+      ++end;
+    }
+    if (end - i < DesignedPlaneSegments)
+    {
+      std::fill(shape.Coplanar.begin() + i, shape.Coplanar.begin() + end, 0);
+    }
+    i = std::max(end, i + 1);
   }
   // Where the segments on either side of one twist opposite ways, the
   // torsion passes through zero near it: by the discrete torsions (a curve's

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 
@@ -361,6 +362,53 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   const DiscreteShape floatBent = discreteShape(cleanPolyline(bent, false), {}, {}, moved);
   EXPECT_FALSE(floatBent.Coplanar[2] || floatBent.Twisted[2]);
   EXPECT_TRUE(floatBent.Collinear[1]);
+}
+
+TEST(DiscreteShape, PlanesTheRoundingMakesAreNoShape)
+{
+  // A smooth 3D trajectory (coordinates 100-400, segments of about 0.5)
+  // written with six significant digits (a step of 1e-3): one segment in
+  // twenty has its four points exactly coplanar, where a coordinate rounds
+  // to one value around its extremum or the second differences round alike.
+  // Taken as planes, they asked every spline for a planar span amid a
+  // twisting curve. A designed z-level (a tool path's), rounded alike, holds
+  // more points than rounding keeps in one plane: a plane.
+  const double step = 1e-3;
+  const double reach = 0.5 * std::sqrt(3.0) * step;
+  std::vector<Vec3> trajectory, toolPath;
+  constexpr int Points = 600;
+  for (int i = 0; i < Points; ++i)
+  {
+    const double s = static_cast<double>(i) / (Points - 1);
+    Vec3 p(250.0 + 60.0 * std::sin(Pi * s + 0.3) + 20.0 * std::sin(3.0 * Pi * s),
+      200.0 + 70.0 * std::sin(2.0 * Pi * s + 1.0), 180.0 + 50.0 * std::cos(1.5 * Pi * s));
+    p = (p / step).array().round().matrix() * step;
+    trajectory.push_back(p);
+    if (i >= 200 && i < 240)
+    {
+      p.z() = toolPath[199].z(); // 40 points on one z-level
+    }
+    toolPath.push_back(p);
+  }
+  const CleanPolyline data = cleanPolyline(trajectory, false);
+  int exactlyPlanar = 0;
+  for (int i = 1; i + 1 < data.numberOfSpans(); ++i)
+  {
+    const Vec3 a = data.segment(i - 1).normalized(), b = data.segment(i).normalized(),
+               c = data.segment(i + 1).normalized();
+    exactlyPlanar += std::abs(a.dot(b.cross(c))) < 1e-14;
+  }
+  EXPECT_GT(exactlyPlanar, 10);
+  const DiscreteShape rounded = discreteShape(data, {}, {}, 0.0, reach);
+  EXPECT_EQ(std::count(rounded.Coplanar.begin(), rounded.Coplanar.end(), 1), 0);
+  // Taken as exact, they are planes.
+  const DiscreteShape exact = discreteShape(data);
+  EXPECT_GE(std::count(exact.Coplanar.begin(), exact.Coplanar.end(), 1), exactlyPlanar / 2);
+  const DiscreteShape designed = discreteShape(cleanPolyline(toolPath, false), {}, {}, 0.0, reach);
+  for (int i = 204; i < 238; ++i) // away from the step onto the level
+  {
+    EXPECT_TRUE(designed.Coplanar[i]) << i;
+  }
 }
 
 TEST(DiscreteShape, MirrorFlipsDiscreteTorsion)
