@@ -8,7 +8,6 @@
 
 #include <cstddef>
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -62,21 +61,6 @@ std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples);
 /// float: the same rounding), DBL_EPSILON otherwise.
 double coordinatePrecision(vtkPolyData* polyData);
 
-/// The step each coordinate (x, y, z) of polyData's points was written with,
-/// to within precision, their coordinatePrecision (12.345 read as a float has
-/// three decimals). Text formats round coordinates, to a fixed number of
-/// decimals (PDB files to 1e-3 angstrom, "%.3f") or of significant digits
-/// ("%.5e", ParaView's CSV export), and a turn or twist within that rounding
-/// is no shape to keep. For decimals, 10^-d for the fewest digits d >= 2
-/// after the decimal point every value has; for significant digits, the
-/// step of the largest values at the fewest digits (>= 3) every value has;
-/// where both fit the values, the finer. 0 for a coordinate whose values need
-/// more digits than their type holds, or none (integers, tenths: designed
-/// values, taken as exact).
-std::array<double, 3> coordinateSteps(vtkPolyData* polyData, double precision);
-
-/// The most rounding to those steps moves a point: half the diagonal of a step cell.
-double roundingReach(const std::array<double, 3>& steps);
 } // namespace shapesplines
 
 #endif

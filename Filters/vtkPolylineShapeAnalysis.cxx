@@ -439,8 +439,6 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
   // As the curve filters do: a turn or twist within the rounding of float
   // input, or of coordinates written with few digits, is no shape.
   const double precision = shapesplines::coordinatePrecision(input);
-  const double reach =
-    shapesplines::roundingReach(shapesplines::coordinateSteps(input, precision));
   for (size_t l = 0; l < lines.size(); ++l)
   {
     std::vector<Vec3> points;
@@ -452,7 +450,8 @@ void vtkPolylineShapeAnalysis::Analyse(vtkPolyData* input, vtkPolyData* curve, v
       largest = std::max(largest, p.cwiseAbs().maxCoeff());
     }
     const auto shape =
-      shapesplines::discreteShape(data, tolerances, {}, precision * largest, reach);
+      shapesplines::discreteShape(data, tolerances, {}, precision * largest,
+        shapesplines::coordinateSteps(data.Points, precision));
     if (finite)
     {
       discrete.Write(lines[l].PointIds, data, shape);

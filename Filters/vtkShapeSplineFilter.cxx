@@ -1270,8 +1270,6 @@ shapesplines::FitOptions vtkShapeSplineFilter::BuildFitOptions(vtkPolyData* inpu
   options.Tolerances.Data = this->DataShapeTolerance;
   options.Tolerances.Curve = this->CurveShapeTolerance;
   options.CoordinatePrecision = shapesplines::coordinatePrecision(input);
-  options.CoordinateReach = shapesplines::roundingReach(
-    shapesplines::coordinateSteps(input, options.CoordinatePrecision));
   return options;
 }
 

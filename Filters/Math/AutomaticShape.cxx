@@ -66,7 +66,7 @@ public:
     , Reference(reference)
     , Ladder(ladder)
     , Shape(discreteShape(reference, context.Options.Tolerances, ladder.ReferenceNoise,
-        context.CoordinateNoise, context.RoundingReach))
+        context.CoordinateNoise, context.RoundingSteps))
     , Spans(reference.numberOfSpans())
     , Auditor(reference, this->Shape, context.Options.Tolerances,
         context.Options.AuditSubdivisions, context.CoordinateNoise,

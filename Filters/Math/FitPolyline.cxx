@@ -387,7 +387,7 @@ ShapeAudit auditCurve(const Curve& curve, const CleanPolyline& data, const Discr
 ProgressPart::ProgressPart(const FitContext& whole, double from, double to)
   : Options(whole.Options)
   , Context{ whole.Data, whole.Knots, this->Options, whole.CoordinateNoise, whole.PointValues,
-      whole.RoundingReach }
+      whole.RoundingSteps }
 {
   this->Options.Progress = progressWithin(whole.Options.Progress, from, to);
 }
@@ -397,7 +397,7 @@ ShapeAudit FitContext::audit(const Curve& curve, const CleanPolyline& reference,
 {
   return auditCurve(curve, reference,
     discreteShape(reference, this->Options.Tolerances, referenceNoise, this->CoordinateNoise,
-      this->RoundingReach),
+      this->RoundingSteps),
     this->Options.Tolerances, this->Options.AuditSubdivisions, this->CoordinateNoise,
     this->Options.Progress);
 }
@@ -604,7 +604,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   }
   fit.CoordinateNoise = options.CoordinatePrecision *
     std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) / fit.Scale;
-  fit.RoundingReach = options.CoordinateReach / fit.Scale;
+  fit.RoundingSteps = coordinateSteps(fit.Data.Points, options.CoordinatePrecision) / fit.Scale;
   for (Vec3& p : fit.Data.Points)
   {
     p = (p - fit.Origin) / fit.Scale;
@@ -643,7 +643,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
       values.push_back(pointValues[fit.Data.SourceIndex[i]]);
     }
     built = build(
-      FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values, fit.RoundingReach });
+      FitContext{ fit.Data, fit.Knots, options, fit.CoordinateNoise, values, fit.RoundingSteps });
   }
   fit.Spline = std::move(built.Spline);
   fit.ShapeReference = std::move(built.ShapeReference);
@@ -655,7 +655,7 @@ FittedPolyline fitPolyline(const std::vector<Vec3>& points, const FitOptions& op
   fit.StarvedSpan = built.StarvedSpan;
   const CleanPolyline& reference = fit.ShapeReference ? *fit.ShapeReference : fit.Data;
   fit.Shape = discreteShape(
-    reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise, fit.RoundingReach);
+    reference, options.Tolerances, built.ReferenceNoise, fit.CoordinateNoise, fit.RoundingSteps);
   fit.LooksNoisy = !fit.ShapeReference && !mostlyStraightRuns(fit.Shape) &&
     looksNoisy(fit.Data.Points, fit.Knots, fit.Data.Closed);
   fit.Audit = built.Audit ? *std::move(built.Audit)

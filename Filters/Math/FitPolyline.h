@@ -27,10 +27,6 @@ struct FitOptions
   /// Relative precision of the input coordinates (FLT_EPSILON for float input):
   /// curvature within their rounding counts as zero.
   double CoordinatePrecision = 2.220446049250313e-16;
-  /// The most the rounding of the input coordinates to the digits they were
-  /// written with moves a point, in data units (0: none): a turn or twist
-  /// that rounding can make counts as no shape.
-  double CoordinateReach = 0.0;
   /// Progress of the shape audits of one line (see ProgressCallback); none by default.
   ProgressCallback Progress;
 };
@@ -48,8 +44,9 @@ struct FitContext
   double CoordinateNoise = 0.0;
   /// A user's value per cleaned point (e.g. a starting tension), or empty.
   const std::vector<double>& PointValues;
-  /// FitOptions::CoordinateReach, normalised (see discreteShape).
-  double RoundingReach = 0.0;
+  /// The steps the line's coordinates were written with (coordinateSteps),
+  /// normalised: a turn or twist that rounding can make is no shape.
+  Vec3 RoundingSteps = Vec3::Zero();
 
   /// The audit of a curve against the Definition 1 shape of reference, a
   /// polygon with one vertex per knot of the curve: the data for an
@@ -121,7 +118,7 @@ struct FittedPolyline
   double ParameterScale = 1.0;  ///< data-unit parameter per normalised parameter
   std::vector<Vec3> KnotPoints; ///< the cleaned points in input coordinates
   double CoordinateNoise = 0.0; ///< rounding of the input coordinates, normalised
-  double RoundingReach = 0.0;   ///< their written digits' rounding, normalised (see FitContext)
+  Vec3 RoundingSteps = Vec3::Zero(); ///< their written digits' steps, normalised (see FitContext)
   /// Normalised parameter of each cleaned point (for an approximation, where
   /// it sits on the curve: corrected, see planApproximation).
   std::vector<double> Knots;

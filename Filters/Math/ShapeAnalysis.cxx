@@ -3,6 +3,8 @@
 #include "ExtendedIndex.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -58,9 +60,178 @@ namespace
 constexpr double ExactlyStraight = 64.0 * std::numeric_limits<double>::epsilon();
 } // namespace
 
-DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
-  const std::vector<double>& vertexNoise, double coordinateNoise, double roundingReach)
+namespace
 {
+/// 10^k, from a table: coordinateSteps asks several per coordinate value.
+double powerOfTen(int k)
+{
+  constexpr int Reach = 400; // beyond a double's exponents either way
+  static const std::array<double, 2 * Reach + 1> powers = [] {
+    std::array<double, 2 * Reach + 1> table{};
+    for (int i = 0; i < static_cast<int>(table.size()); ++i)
+    {
+      table[i] = std::pow(10.0, i - Reach);
+    }
+    return table;
+  }();
+  return powers[std::clamp(k, -Reach, Reach) + Reach];
+}
+/// The digits a value needs, to within its type's rounding: after the decimal
+/// point, and significant ones; -1 where more than were tried.
+struct Digits
+{
+  int Decimals = -1;
+  int Significant = -1;
+  int Exponent = 0; ///< of its leading digit
+};
+
+/// True when value * scale is an integer but for the type's rounding.
+bool wholeSteps(double value, double scale, double precision)
+{
+  const double steps = value * scale;
+  return std::abs(steps - std::round(steps)) <= 2.0 * precision * (std::abs(steps) + 1.0);
+}
+
+Digits digitsOf(double value, int mostDecimals, int mostSignificant, double precision)
+{
+  Digits digits;
+  if (value == 0.0)
+  {
+    digits.Decimals = digits.Significant = 0;
+    return digits;
+  }
+  for (int d = 0; d <= mostDecimals && digits.Decimals < 0; ++d)
+  {
+    if (wholeSteps(value, powerOfTen(d), precision))
+    {
+      digits.Decimals = d;
+    }
+  }
+  int exponent = static_cast<int>(std::floor(std::log10(std::abs(value))));
+  exponent += std::abs(value) >= powerOfTen(exponent + 1) ? 1 : 0;
+  exponent -= std::abs(value) < powerOfTen(exponent) ? 1 : 0;
+  digits.Exponent = exponent;
+  for (int s = 1; s <= mostSignificant && digits.Significant < 0; ++s)
+  {
+    if (wholeSteps(value, powerOfTen(s - 1 - exponent), precision))
+    {
+      digits.Significant = s;
+    }
+  }
+  return digits;
+}
+
+/// The step one coordinate's values were written with (see coordinateSteps).
+double columnStep(const std::vector<double>& values, double precision)
+{
+  double largest = 0.0;
+  for (const double value : values)
+  {
+    largest = std::max(largest, std::abs(value));
+  }
+  // A step is tested only well above the type's rounding, so that a value
+  // off the step by that rounding is told from one off by chance (at most an
+  // eighth of the step either way: a quarter of random values pass each).
+  constexpr double StepOverRounding = 16.0;
+  int decimalsTried = static_cast<int>(std::floor(-std::log10(StepOverRounding * precision *
+    std::max(largest, std::numeric_limits<double>::min()))));
+  int significantTried = static_cast<int>(std::floor(-std::log10(StepOverRounding * precision)));
+  std::vector<Digits> digits;
+  digits.reserve(values.size());
+  for (const double value : values)
+  {
+    digits.push_back(digitsOf(value, decimalsTried, significantTried, precision));
+    // A way one value does not fit is out: not tried on the others.
+    decimalsTried = digits.back().Decimals < 0 ? -1 : decimalsTried;
+    significantTried = digits.back().Significant < 0 ? 0 : significantTried;
+    if (decimalsTried < 0 && significantTried == 0)
+    {
+      return 0.0;
+    }
+  }
+  // Two ways to write numbers: a fixed number of decimals ("%.3f": the step
+  // is the same everywhere) or of significant digits ("%.5e", ParaView's CSV
+  // default: the step grows with the value). Either fits the other's
+  // numbers with more digits than they show, which few values use: random
+  // last digits leave a tenth of the values short of a way's digits, and a
+  // way is plausible where at least a quarter use them all.
+  struct Way
+  {
+    int Digits = -1; ///< the fewest that fit every value, -1: none
+    int Full = 0;    ///< nonzero values that use them all
+  };
+  int nonzero = 0;
+  for (const Digits& d : digits)
+  {
+    nonzero += d.Significant != 0;
+  }
+  auto fewest = [&](int Digits::*count) {
+    Way way;
+    for (const Digits& d : digits)
+    {
+      if (d.*count < 0)
+      {
+        return Way{};
+      }
+      way.Digits = std::max(way.Digits, d.*count);
+    }
+    for (const Digits& d : digits)
+    {
+      way.Full += d.Significant != 0 && d.*count == way.Digits;
+    }
+    return way;
+  };
+  const Way decimals = fewest(&Digits::Decimals);
+  const Way significant = fewest(&Digits::Significant);
+  constexpr int FewestDecimals = 2, FewestSignificant = 3;
+  if (decimals.Digits >= 0 && decimals.Digits < FewestDecimals)
+  {
+    return 0.0; // integers, tenths: designed values
+  }
+  const double decimalStep = decimals.Digits >= 0 ? powerOfTen(-decimals.Digits) : 0.0;
+  if (significant.Digits < FewestSignificant || 4 * significant.Full < nonzero ||
+    (decimalStep > 0 && significant.Full < decimals.Full))
+  {
+    return decimalStep;
+  }
+  int exponent = std::numeric_limits<int>::min();
+  for (const Digits& d : digits)
+  {
+    exponent = d.Significant != 0 ? std::max(exponent, d.Exponent) : exponent;
+  }
+  // The largest values' step bounds every value's.
+  const double significantStep = powerOfTen(exponent - significant.Digits + 1);
+  // Equally plausible (all values within one decade): the finer step.
+  return decimalStep > 0 && significant.Full == decimals.Full
+    ? std::min(decimalStep, significantStep)
+    : significantStep;
+}
+} // namespace
+
+Vec3 coordinateSteps(const std::vector<Vec3>& points, double precision)
+{
+  Vec3 steps = Vec3::Zero();
+  std::vector<double> column(points.size());
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+      column[i] = points[i][axis];
+      if (!std::isfinite(column[i]))
+      {
+        return Vec3::Zero();
+      }
+    }
+    steps[axis] = column.empty() ? 0.0 : columnStep(column, precision);
+  }
+  return steps;
+}
+
+DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances,
+  const std::vector<double>& vertexNoise, double coordinateNoise, const Vec3& roundingSteps)
+{
+  // Each coordinate rounded by up to half its step.
+  const double roundingReach = 0.5 * roundingSteps.norm();
   const int n = static_cast<int>(data.Points.size());
   // How far segment i's direction turns with its vertices' noise, times its length.
   auto noise = [&](int i) { return std::max(vertexNoise.empty() ? 0.0 : vertexNoise[i], coordinateNoise); };
@@ -198,7 +369,12 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
         a.cross(b).norm() * moved(next) / length[next];
     };
     const double noiseTwist = twistBy(segmentNoise);
-    const double roundingTwist = twistBy([&](int) { return 2.0 * roundingReach; });
+    // Rounding twists the segments by moving points out of their plane: by
+    // up to half of each axis's step along the plane's normal (none out of a
+    // plane z = 0 whose z are designed).
+    const Vec3 normal = (a.cross(b).norm() >= b.cross(c).norm() ? a.cross(b) : b.cross(c)).normalized();
+    const double outOfPlane = 0.5 * normal.cwiseAbs().dot(roundingSteps);
+    const double roundingTwist = twistBy([&](int) { return 2.0 * outOfPlane; });
     const bool significant =
       std::abs(triple) > NoiseSignificance * noiseTwist && std::abs(triple) > roundingTwist;
     // Planar within the flatness by chance where the rounding (of the
@@ -208,7 +384,7 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const bool roundingCanTwist = std::max(roundingTwist, floatTwist) > flatness;
     shape.Torsion[i] = flat ? 0.0 : triple / (length[i] * crosses);
     shape.Coplanar[i] = flat && (!roundingCanTwist || std::abs(triple) <= ExactlyStraight);
-    latticePlane[i] = shape.Coplanar[i] && roundingCanTwist;
+    latticePlane[i] = shape.Coplanar[i] && roundingTwist > flatness;
     shape.Twisted[i] = !flat && significant;
   }
   // Rounded points are exactly coplanar by the rounding too: where one

@@ -56,6 +56,23 @@ struct DiscreteShape
 };
 
 /**
+ * The step each coordinate (x, y, z) of points was written with, to within
+ * precision, their relative rounding (12.345 read as a float has three
+ * decimals). Text formats round coordinates, to a fixed number of decimals
+ * (PDB files to 1e-3 angstrom, "%.3f") or of significant digits ("%.5e",
+ * ParaView's CSV export; "%g"), and a turn or twist within that rounding is
+ * no shape to keep. For decimals, 10^-d for the fewest digits d >= 2 after
+ * the decimal point every value has; for significant digits, the step of
+ * the largest values at the fewest digits (>= 3) every value has; of two
+ * ways that fit, the one more values use all digits of (equally: the
+ * finer). 0 for a coordinate whose values need more digits than their type
+ * holds, or none (integers, tenths: designed values, taken as exact). The
+ * filters read each line's points: a line is one rank's in a distributed
+ * run, and files that mix formats keep each line's.
+ */
+Vec3 coordinateSteps(const std::vector<Vec3>& points, double precision);
+
+/**
  * The discrete shape of data. vertexNoise, one per point (the reference
  * polygon of an approximation, whose vertices move by about that much with
  * the noise of the points; empty: none): a turn or a twist counts only where
@@ -68,9 +85,9 @@ struct DiscreteShape
  * data's units (FitContext::CoordinateNoise), is every vertex's least noise:
  * float coordinates leave a segment of 1e-4 of the diagonal a direction
  * known to about 0.1, and a turn or twist within that is no shape to keep.
- * roundingReach, the most the rounding of coordinates written with few
- * digits moves a point, in the data's units (FitContext::RoundingReach): a
- * bound, not a spread. A turn or twist counts only
+ * roundingSteps, the steps the coordinates were written with in the data's
+ * units (see coordinateSteps; FitContext::RoundingSteps), move each point by
+ * up to half of them on each axis: a bound, not a spread. A turn or twist counts only
  * beyond the most that rounding can make of it (a straight run or a plane given to three decimals turns and
  * twists by their rounding, either way, and keeping those signs bent the
  * curve), while the small turns of data given to a few decimals above that
@@ -78,7 +95,7 @@ struct DiscreteShape
  */
 DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& tolerances = {},
   const std::vector<double>& vertexNoise = {}, double coordinateNoise = 0.0,
-  double roundingReach = 0.0);
+  const Vec3& roundingSteps = Vec3::Zero());
 
 /// How far a curve may stray from its reference polygon: a fraction of the
 /// longest of the segment and its neighbours (see ShapeAudit::PolygonDeviation).

@@ -547,6 +547,20 @@ def noise_sweep_lines(rng):
         xyz = np.column_stack([curve, np.zeros(count)]) * 10 ** rng.uniform(0, 2.5) / np.ptp(curve, axis=0).max()
         planar.append(np.round(rotated(xyz) + rng.uniform(-100, 100, 3), 3))
     sets["planar, 3 decimals"] = planar
+    # Streamlines and trajectories as ParaView's CSV export writes them: six
+    # significant digits ("%.5e"), the step growing with the value.
+    smooth = []
+    for i in range(60):
+        count = int(rng.integers(200, 601))
+        u = np.linspace(0, 1, count)
+        xyz = np.zeros((count, 3))
+        for axis in range(3):
+            for k in (1, 2, 3):
+                xyz[:, axis] += rng.normal() / k * np.sin(np.pi * k * rng.uniform(0.5, 1.5) * u +
+                                                          rng.uniform(0, 2 * np.pi))
+        xyz = xyz * 10 ** rng.uniform(0.5, 2.5) + rng.uniform(-300, 300, 3)
+        smooth.append(np.array([[float("%.5e" % c) for c in p] for p in xyz]))
+    sets["smooth 3D, %.5e"] = smooth
     return sets
 
 
@@ -558,7 +572,8 @@ def shape_on_a_noise_sweep(seed=41):
     sets = noise_sweep_lines(np.random.default_rng(seed))
     print("\nShape on a sweep of noisy lines (25-200 points, 0.1-1% noise of the diagonal, 10 lines each) and "
           "staircases turning 20-160 degrees in 3D, centerline-like lines (80-300 uneven points, 0.05-0.2% noise) "
-          "and planar curves in tilted planes at three decimals, "
+          "planar curves in tilted planes at three decimals and smooth 3D curves written with six "
+          "significant digits, "
           "every family's default mode against its fixed mode:")
     print("%-9s %-18s %7s %22s %13s %20s %8s" % ("family", "data", "lines", "violations fixed/auto",
                                                  "lines left", "curvature / data's", "cost"))

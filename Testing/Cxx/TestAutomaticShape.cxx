@@ -206,7 +206,7 @@ CurveBuilder toyBuilder(
     FitOptions options = context.Options;
     options.Progress = toy.Progress;
     const FitContext withProgress{ context.Data, context.Knots, options, context.CoordinateNoise,
-      context.PointValues, context.RoundingReach };
+      context.PointValues, context.RoundingSteps };
     AutomaticShape found = driver(withProgress, context.Data, ladder);
     run.Levels = found.Levels;
     return builtCurve(std::move(found));

@@ -316,12 +316,12 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   }
   const CleanPolyline straight = cleanPolyline(run, false);
   const DiscreteShape exactRun = discreteShape(straight);
-  const DiscreteShape roundedRun = discreteShape(straight, {}, {}, 0.0, moved);
+  const DiscreteShape roundedRun = discreteShape(straight, {}, {}, 0.0, Vec3::Constant(step));
   EXPECT_GE(std::count(exactRun.Convex.begin(), exactRun.Convex.end(), 1), 5);
   EXPECT_EQ(std::count(roundedRun.Convex.begin(), roundedRun.Convex.end(), 1), 0);
   const CleanPolyline strand = cleanPolyline(zigzag, false);
   const DiscreteShape exactStrand = discreteShape(strand);
-  const DiscreteShape roundedStrand = discreteShape(strand, {}, {}, 0.0, moved);
+  const DiscreteShape roundedStrand = discreteShape(strand, {}, {}, 0.0, Vec3::Constant(step));
   EXPECT_GE(std::count(exactStrand.Twisted.begin(), exactStrand.Twisted.end(), 1), 6);
   EXPECT_EQ(std::count(roundedStrand.Twisted.begin(), roundedStrand.Twisted.end(), 1), 0);
   EXPECT_EQ(roundedStrand.Convex, exactStrand.Convex);
@@ -336,7 +336,7 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
     const double y = factor * bound; // sine of the turn, to 1e-5 of itself
     const CleanPolyline turn =
       cleanPolyline({ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, y, 0) }, false);
-    EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, moved).Convex[1], factor > 1.0) << factor;
+    EXPECT_EQ(discreteShape(turn, {}, {}, 0.0, Vec3::Constant(step)).Convex[1], factor > 1.0) << factor;
     EXPECT_TRUE(discreteShape(turn).Convex[1]) << factor;
   }
 
@@ -346,7 +346,7 @@ TEST(DiscreteShape, TurnsAndTwistsTheDecimalsRoundingCanMakeAreNoShape)
   const std::vector<Vec3> bent{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 5e-7, 0), Vec3(3, 1, 0),
     Vec3(4, 1.5, 3e-7) };
   const DiscreteShape exactBent = discreteShape(cleanPolyline(bent, false));
-  const DiscreteShape roundedBent = discreteShape(cleanPolyline(bent, false), {}, {}, 0.0, moved);
+  const DiscreteShape roundedBent = discreteShape(cleanPolyline(bent, false), {}, {}, 0.0, Vec3::Constant(step));
   EXPECT_TRUE(exactBent.Collinear[1]);
   EXPECT_FALSE(roundedBent.Collinear[1] || roundedBent.Convex[1]);
   EXPECT_TRUE(exactBent.Coplanar[2]);
@@ -374,7 +374,6 @@ TEST(DiscreteShape, PlanesTheRoundingMakesAreNoShape)
   // twisting curve. A designed z-level (a tool path's), rounded alike, holds
   // more points than rounding keeps in one plane: a plane.
   const double step = 1e-3;
-  const double reach = 0.5 * std::sqrt(3.0) * step;
   std::vector<Vec3> trajectory, toolPath;
   constexpr int Points = 600;
   for (int i = 0; i < Points; ++i)
@@ -399,12 +398,12 @@ TEST(DiscreteShape, PlanesTheRoundingMakesAreNoShape)
     exactlyPlanar += std::abs(a.dot(b.cross(c))) < 1e-14;
   }
   EXPECT_GT(exactlyPlanar, 10);
-  const DiscreteShape rounded = discreteShape(data, {}, {}, 0.0, reach);
+  const DiscreteShape rounded = discreteShape(data, {}, {}, 0.0, Vec3::Constant(step));
   EXPECT_EQ(std::count(rounded.Coplanar.begin(), rounded.Coplanar.end(), 1), 0);
   // Taken as exact, they are planes.
   const DiscreteShape exact = discreteShape(data);
   EXPECT_GE(std::count(exact.Coplanar.begin(), exact.Coplanar.end(), 1), exactlyPlanar / 2);
-  const DiscreteShape designed = discreteShape(cleanPolyline(toolPath, false), {}, {}, 0.0, reach);
+  const DiscreteShape designed = discreteShape(cleanPolyline(toolPath, false), {}, {}, 0.0, Vec3::Constant(step));
   for (int i = 204; i < 238; ++i) // away from the step onto the level
   {
     EXPECT_TRUE(designed.Coplanar[i]) << i;

@@ -4,6 +4,7 @@
 // of every automatic shape mode.
 #include "FilterTestUtilities.h"
 #include "LineCells.h"
+#include "ShapeAnalysis.h"
 
 #include "vtkCellData.h"
 #include "vtkCubicSplineFilter.h"
@@ -750,10 +751,17 @@ namespace
 {
 using Steps = std::array<double, 3>;
 
-/// The steps data's coordinates were written with, as the filters read them.
+/// The steps data's coordinates were written with, as the filters read a line's.
 Steps StepsOf(vtkPolyData* data)
 {
-  return shapesplines::coordinateSteps(data, shapesplines::coordinatePrecision(data));
+  std::vector<shapesplines::Vec3> points(data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i)
+  {
+    data->GetPoint(i, points[i].data());
+  }
+  const shapesplines::Vec3 steps =
+    shapesplines::coordinateSteps(points, shapesplines::coordinatePrecision(data));
+  return { steps.x(), steps.y(), steps.z() };
 }
 
 /// The same step on every axis.
