@@ -58,10 +58,7 @@ namespace
 /// A turning sine or triple product of unit segments within this of zero is
 /// zero but for the rounding of its own arithmetic.
 constexpr double ExactlyStraight = 64.0 * std::numeric_limits<double>::epsilon();
-} // namespace
 
-namespace
-{
 /// 10^k, from a table: coordinateSteps asks several per coordinate value.
 double powerOfTen(int k)
 {
@@ -76,6 +73,7 @@ double powerOfTen(int k)
   }();
   return powers[std::clamp(k, -Reach, Reach) + Reach];
 }
+
 /// The digits a value needs, to within its type's rounding: after the decimal
 /// point, and significant ones; -1 where more than were tried.
 struct Digits
@@ -92,6 +90,7 @@ bool wholeSteps(double value, double scale, double precision)
   return std::abs(steps - std::round(steps)) <= 2.0 * precision * (std::abs(steps) + 1.0);
 }
 
+/// The digits value needs, of at most mostDecimals and mostSignificant.
 Digits digitsOf(double value, int mostDecimals, int mostSignificant, double precision)
 {
   Digits digits;
@@ -157,8 +156,8 @@ double columnStep(const std::vector<double>& values, double precision)
   // way is plausible where at least a quarter use them all.
   struct Way
   {
-    int Digits = -1; ///< the fewest that fit every value, -1: none
-    int Full = 0;    ///< nonzero values that use them all
+    int Count = -1; ///< the fewest digits that fit every value, -1: none
+    int Full = 0;   ///< nonzero values that use them all
   };
   int nonzero = 0;
   for (const Digits& d : digits)
@@ -173,23 +172,23 @@ double columnStep(const std::vector<double>& values, double precision)
       {
         return Way{};
       }
-      way.Digits = std::max(way.Digits, d.*count);
+      way.Count = std::max(way.Count, d.*count);
     }
     for (const Digits& d : digits)
     {
-      way.Full += d.Significant != 0 && d.*count == way.Digits;
+      way.Full += d.Significant != 0 && d.*count == way.Count;
     }
     return way;
   };
   const Way decimals = fewest(&Digits::Decimals);
   const Way significant = fewest(&Digits::Significant);
   constexpr int FewestDecimals = 2, FewestSignificant = 3;
-  if (decimals.Digits >= 0 && decimals.Digits < FewestDecimals)
+  if (decimals.Count >= 0 && decimals.Count < FewestDecimals)
   {
     return 0.0; // integers, tenths: designed values
   }
-  const double decimalStep = decimals.Digits >= 0 ? powerOfTen(-decimals.Digits) : 0.0;
-  if (significant.Digits < FewestSignificant || 4 * significant.Full < nonzero ||
+  const double decimalStep = decimals.Count >= 0 ? powerOfTen(-decimals.Count) : 0.0;
+  if (significant.Count < FewestSignificant || 4 * significant.Full < nonzero ||
     (decimalStep > 0 && significant.Full < decimals.Full))
   {
     return decimalStep;
@@ -200,7 +199,7 @@ double columnStep(const std::vector<double>& values, double precision)
     exponent = d.Significant != 0 ? std::max(exponent, d.Exponent) : exponent;
   }
   // The largest values' step bounds every value's.
-  const double significantStep = powerOfTen(exponent - significant.Digits + 1);
+  const double significantStep = powerOfTen(exponent - significant.Count + 1);
   // Equally plausible (all values within one decade): the finer step.
   return decimalStep > 0 && significant.Full == decimals.Full
     ? std::min(decimalStep, significantStep)

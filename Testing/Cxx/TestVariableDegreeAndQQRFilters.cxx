@@ -870,6 +870,13 @@ TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
     SCOPED_TRACE("qqr");
     ExpectRoundingIsNoShape<QQR>(decimals, exact);
   }
+  // In one input with the exact line, the rounded line keeps its own digits
+  // (the input's steps would be the exact line's: none).
+  const FilterRun mixed = RunFilter<vtkGeneralizedCubicSplineFilter>(
+    PolylinesData({ rounded, jittered }),
+    [](vtkGeneralizedCubicSplineFilter* f) { f->AutomaticOff(); });
+  EXPECT_EQ(CellArray(mixed.Output, "ShapeViolations")->GetTuple1(0), 0.0);
+  EXPECT_GE(CellArray(mixed.Output, "ShapeViolations")->GetTuple1(1), 3.0);
 }
 
 namespace
