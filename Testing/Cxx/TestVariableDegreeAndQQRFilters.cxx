@@ -23,8 +23,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <limits>
 #include <random>
+#include <utility>
 
 using namespace shapesplines::filtertest;
 
@@ -764,6 +766,58 @@ Steps StepsOf(vtkPolyData* data)
   return { steps.x(), steps.y(), steps.z() };
 }
 
+/// A sine wave of amplitude 1.5 in a tilted plane (two periods, x from 3 to
+/// 15) at `points` points, each coordinate written by `write`, and the same
+/// values moved off their digits by up to `jitter` times themselves: the
+/// rounded line and one taken as exact.
+std::pair<Polyline, Polyline> WrittenSineWave(
+  int points, const std::function<double(double)>& write, double jitter)
+{
+  const double tilt = 0.7, turn = 0.4;
+  const Point u{ std::cos(turn), 0.0, -std::sin(turn) };
+  const Point v{ std::sin(turn) * std::sin(tilt), std::cos(tilt), std::cos(turn) * std::sin(tilt) };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> off(-jitter, jitter);
+  Polyline rounded, jittered;
+  for (int i = 0; i < points; ++i)
+  {
+    const double t = 4 * Pi * i / (points - 1);
+    Point p = Point{ 3.0, -2.0, 5.0 } + t * u + 1.5 * std::sin(t) * v;
+    for (double& c : p)
+    {
+      c = write(c);
+    }
+    rounded.push_back(p);
+    for (double& c : p)
+    {
+      c += off(random) * std::abs(c);
+    }
+    jittered.push_back(p);
+  }
+  return { rounded, jittered };
+}
+
+template <class Filter>
+struct Family
+{
+  using type = Filter;
+  const char* Name;
+};
+
+/// expect(Family<F>) for each automatic family's filter F, traced by name.
+template <class Expect>
+void ForEveryFamily(const Expect& expect)
+{
+  const auto run = [&](auto family) {
+    SCOPED_TRACE(family.Name);
+    expect(family);
+  };
+  run(Family<vtkGeneralizedCubicSplineFilter>{ "generalized cubic" });
+  run(Family<VariableDegree>{ "variable degree" });
+  run(Family<Quintic>{ "quintic" });
+  run(Family<QQR>{ "qqr" });
+}
+
 /// The same step on every axis.
 Steps Each(double step)
 {
@@ -800,6 +854,27 @@ double LargestCurvature(const FilterRun& run)
   return curvature->GetRange()[1];
 }
 
+/// Filter's fixed and default modes on rounded points and on the same
+/// values jittered off their digits (taken as exact).
+struct RoundingRuns
+{
+  FilterRun Fixed, Automatic, ExactFixed, ExactAutomatic;
+};
+
+template <class Filter>
+RoundingRuns RunRoundedAndExact(vtkPolyData* rounded, vtkPolyData* jittered)
+{
+  const auto fixedMode = [](Filter* f) { f->AutomaticOff(); };
+  return { RunFilter<Filter>(rounded, fixedMode), RunFilter<Filter>(rounded),
+    RunFilter<Filter>(jittered, fixedMode), RunFilter<Filter>(jittered) };
+}
+
+/// ShapeViolations of a run's first line.
+double Violations(const FilterRun& run)
+{
+  return CellArray(run.Output, "ShapeViolations")->GetTuple1(0);
+}
+
 /// Filter's default mode on points whose turns and twists are within the
 /// rounding of their decimals: the fixed curve, no criterion failed. The
 /// same values off their decimals (jittered), taken as exact: the fixed
@@ -807,21 +882,18 @@ double LargestCurvature(const FilterRun& run)
 template <class Filter>
 void ExpectRoundingIsNoShape(vtkPolyData* rounded, vtkPolyData* jittered)
 {
-  const FilterRun fixed = RunFilter<Filter>(rounded, [](Filter* f) { f->AutomaticOff(); });
-  const FilterRun automatic = RunFilter<Filter>(rounded);
-  EXPECT_EQ(CellArray(fixed.Output, "ShapeViolations")->GetTuple1(0), 0.0);
-  EXPECT_EQ(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0), 0.0);
-  vtkDataArray* fixedCurvature = PointArray(fixed.Output, "Curvature");
-  vtkDataArray* automaticCurvature = PointArray(automatic.Output, "Curvature");
+  const RoundingRuns runs = RunRoundedAndExact<Filter>(rounded, jittered);
+  EXPECT_EQ(Violations(runs.Fixed), 0.0);
+  EXPECT_EQ(Violations(runs.Automatic), 0.0);
+  vtkDataArray* fixedCurvature = PointArray(runs.Fixed.Output, "Curvature");
+  vtkDataArray* automaticCurvature = PointArray(runs.Automatic.Output, "Curvature");
   ASSERT_EQ(automaticCurvature->GetNumberOfTuples(), fixedCurvature->GetNumberOfTuples());
   for (vtkIdType i = 0; i < fixedCurvature->GetNumberOfTuples(); ++i)
   {
     ASSERT_NEAR(automaticCurvature->GetTuple1(i), fixedCurvature->GetTuple1(i), 1e-12) << i;
   }
-  const FilterRun exactFixed = RunFilter<Filter>(jittered, [](Filter* f) { f->AutomaticOff(); });
-  const FilterRun exactAutomatic = RunFilter<Filter>(jittered);
-  EXPECT_GE(CellArray(exactFixed.Output, "ShapeViolations")->GetTuple1(0), 3.0);
-  EXPECT_GT(LargestCurvature(exactAutomatic), 1.3 * LargestCurvature(exactFixed));
+  EXPECT_GE(Violations(runs.ExactFixed), 3.0);
+  EXPECT_GT(LargestCurvature(runs.ExactAutomatic), 1.3 * LargestCurvature(runs.ExactFixed));
 }
 } // namespace
 
@@ -833,43 +905,15 @@ TEST(AutomaticShapeFilters, ATwistWithinTheDecimalsOfTheCoordinatesIsNoShape)
   // 0.2. Taken as exact, every family's fixed curve failed 4-9 torsion signs
   // and its default mode bent the curve to 1.4-3.9 times the fixed curve's
   // largest curvature for them.
-  const double tilt = 0.7, turn = 0.4;
-  const Point u{ std::cos(turn), 0.0, -std::sin(turn) };
-  const Point v{ std::sin(turn) * std::sin(tilt), std::cos(tilt), std::cos(turn) * std::sin(tilt) };
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-1e-9, 1e-9);
-  Polyline rounded, jittered;
-  for (int i = 0; i < 80; ++i)
-  {
-    const double t = 4 * Pi * i / 79;
-    Point p = Point{ 3.0, -2.0, 5.0 } + t * u + 1.5 * std::sin(t) * v;
-    for (double& c : p)
-    {
-      c = std::round(1e3 * c) / 1e3;
-    }
-    rounded.push_back(p);
-    jittered.push_back(p + Point{ jitter(random), jitter(random), jitter(random) });
-  }
+  const auto [rounded, jittered] =
+    WrittenSineWave(80, [](double c) { return std::round(1e3 * c) / 1e3; }, 2e-10);
   const auto decimals = PolylinesData({ rounded });
   const auto exact = PolylinesData({ jittered });
   ASSERT_EQ(StepsOf(decimals), Each(1e-3));
   ASSERT_EQ(StepsOf(exact), Each(0.0));
-  {
-    SCOPED_TRACE("generalized cubic");
-    ExpectRoundingIsNoShape<vtkGeneralizedCubicSplineFilter>(decimals, exact);
-  }
-  {
-    SCOPED_TRACE("variable degree");
-    ExpectRoundingIsNoShape<VariableDegree>(decimals, exact);
-  }
-  {
-    SCOPED_TRACE("quintic");
-    ExpectRoundingIsNoShape<Quintic>(decimals, exact);
-  }
-  {
-    SCOPED_TRACE("qqr");
-    ExpectRoundingIsNoShape<QQR>(decimals, exact);
-  }
+  ForEveryFamily([&](auto family) {
+    ExpectRoundingIsNoShape<typename decltype(family)::type>(decimals, exact);
+  });
   // In one input with the exact line, the rounded line keeps its own digits
   // (the input's steps would be the exact line's: none).
   const FilterRun mixed = RunFilter<vtkGeneralizedCubicSplineFilter>(
@@ -889,15 +933,11 @@ namespace
 template <class Filter>
 void ExpectSignificantDigitsAreNoShape(vtkPolyData* rounded, vtkPolyData* jittered)
 {
-  const FilterRun fixed = RunFilter<Filter>(rounded, [](Filter* f) { f->AutomaticOff(); });
-  const FilterRun automatic = RunFilter<Filter>(rounded);
-  const FilterRun exactFixed = RunFilter<Filter>(jittered, [](Filter* f) { f->AutomaticOff(); });
-  const FilterRun exactAutomatic = RunFilter<Filter>(jittered);
-  const double violations = CellArray(fixed.Output, "ShapeViolations")->GetTuple1(0);
-  EXPECT_LE(4.0 * violations, CellArray(exactFixed.Output, "ShapeViolations")->GetTuple1(0));
-  EXPECT_EQ(CellArray(automatic.Output, "ShapeViolations")->GetTuple1(0), 0.0);
-  EXPECT_LT(LargestCurvature(automatic), 1.05 * LargestCurvature(fixed));
-  EXPECT_GT(LargestCurvature(exactAutomatic), 3.0 * LargestCurvature(exactFixed));
+  const RoundingRuns runs = RunRoundedAndExact<Filter>(rounded, jittered);
+  EXPECT_LE(4.0 * Violations(runs.Fixed), Violations(runs.ExactFixed));
+  EXPECT_EQ(Violations(runs.Automatic), 0.0);
+  EXPECT_LT(LargestCurvature(runs.Automatic), 1.05 * LargestCurvature(runs.Fixed));
+  EXPECT_GT(LargestCurvature(runs.ExactAutomatic), 3.0 * LargestCurvature(runs.ExactFixed));
 }
 } // namespace
 
@@ -908,48 +948,14 @@ TEST(AutomaticShapeFilters, ATurnWithinTheSignificantDigitsOfTheCoordinatesIsNoS
   // ("%.5e"): a step of 1e-5 below x = 10, 1e-4 above. Taken as exact, the
   // fixed curves failed 25-29 criteria and the default modes bent the curve
   // to 5-650 times the fixed curve's largest curvature for them.
-  const double tilt = 0.7, turn = 0.4;
-  const Point u{ std::cos(turn), 0.0, -std::sin(turn) };
-  const Point v{ std::sin(turn) * std::sin(tilt), std::cos(tilt), std::cos(turn) * std::sin(tilt) };
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> jitter(-1e-12, 1e-12);
-  Polyline rounded, jittered;
-  constexpr int Points = 400;
-  for (int i = 0; i < Points; ++i)
-  {
-    const double t = 4 * Pi * i / (Points - 1);
-    Point p = Point{ 3.0, -2.0, 5.0 } + t * u + 1.5 * std::sin(t) * v;
-    for (double& c : p)
-    {
-      c = WrittenWith(c, 6);
-    }
-    rounded.push_back(p);
-    for (double& c : p)
-    {
-      c += jitter(random) * std::abs(c);
-    }
-    jittered.push_back(p);
-  }
+  const auto [rounded, jittered] = WrittenSineWave(400, [](double c) { return WrittenWith(c, 6); }, 1e-12);
   const auto digits = PolylinesData({ rounded });
   const auto exact = PolylinesData({ jittered });
   ASSERT_EQ(StepsOf(digits), (Steps{ 1e-4, 1e-5, 1e-5 }));
   ASSERT_EQ(StepsOf(exact), Each(0.0));
-  {
-    SCOPED_TRACE("generalized cubic");
-    ExpectSignificantDigitsAreNoShape<vtkGeneralizedCubicSplineFilter>(digits, exact);
-  }
-  {
-    SCOPED_TRACE("variable degree");
-    ExpectSignificantDigitsAreNoShape<VariableDegree>(digits, exact);
-  }
-  {
-    SCOPED_TRACE("quintic");
-    ExpectSignificantDigitsAreNoShape<Quintic>(digits, exact);
-  }
-  {
-    SCOPED_TRACE("qqr");
-    ExpectSignificantDigitsAreNoShape<QQR>(digits, exact);
-  }
+  ForEveryFamily([&](auto family) {
+    ExpectSignificantDigitsAreNoShape<typename decltype(family)::type>(digits, exact);
+  });
 }
 
 TEST(AutomaticShapeFilters, TheCoordinatesDecimalsAreTheirRounding)
