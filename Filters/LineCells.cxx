@@ -144,5 +144,4 @@ double coordinatePrecision(vtkPolyData* polyData)
   }
   return floats ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
 }
-
 } // namespace shapesplines

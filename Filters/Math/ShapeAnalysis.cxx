@@ -123,6 +123,12 @@ Digits digitsOf(double value, int mostDecimals, int mostSignificant, double prec
 /// The step one coordinate's values were written with (see coordinateSteps).
 double columnStep(const std::vector<double>& values, double precision)
 {
+  // One value all along (a z-level of a tool path, z = 0 of a planar
+  // track) is the line's design, not a measurement's rounding.
+  if (std::all_of(values.begin(), values.end(), [&](double value) { return value == values[0]; }))
+  {
+    return 0.0;
+  }
   double largest = 0.0;
   for (const double value : values)
   {

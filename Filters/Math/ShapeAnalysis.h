@@ -66,7 +66,8 @@ struct DiscreteShape
  * the largest values at the fewest digits (>= 3) every value has; of two
  * ways that fit, the one more values use all digits of (equally: the
  * finer). 0 for a coordinate whose values need more digits than their type
- * holds, or none (integers, tenths: designed values, taken as exact). The
+ * holds, or none (integers, tenths: designed values, taken as exact), or
+ * keeps one value along the line (a z-level). The
  * filters read each line's points: a line is one rank's in a distributed
  * run, and files that mix formats keep each line's.
  */

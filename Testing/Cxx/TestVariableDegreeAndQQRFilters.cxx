@@ -1039,11 +1039,12 @@ TEST(AutomaticShapeFilters, TheCoordinatesSignificantDigitsAreTheirRounding)
   }
   EXPECT_EQ(StepsOf(PointsData(decimals, VTK_DOUBLE)), Each(1e-3));
   // A designed column beside a measured one (the titanium data: integer
-  // temperatures, values to three decimals) and a constant one: each its own.
+  // temperatures, values to three decimals) and a constant one (a z-level,
+  // whatever its decimals): each its own.
   std::vector<double> columns;
   for (int i = 0; i < 49; ++i)
   {
-    columns.insert(columns.end(), { 595.0 + 10 * i, std::round(1e3 * std::abs(values[i])) / 1e3, 0.0 });
+    columns.insert(columns.end(), { 595.0 + 10 * i, std::round(1e3 * std::abs(values[i])) / 1e3, 12.345 });
   }
   EXPECT_EQ(StepsOf(PointsData(columns, VTK_DOUBLE)), (Steps{ 0.0, 1e-3, 0.0 }));
 }
