@@ -12,11 +12,11 @@
 #include "vtkPolyData.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
 #include <map>
-#include <vector>
 
 namespace shapesplines
 {

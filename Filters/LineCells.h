@@ -60,7 +60,6 @@ std::string removeMisfitArrays(vtkFieldData* data, vtkIdType tuples);
 /// text with their 9 significant digits (within half the last digit of a
 /// float: the same rounding), DBL_EPSILON otherwise.
 double coordinatePrecision(vtkPolyData* polyData);
-
 } // namespace shapesplines
 
 #endif

@@ -282,11 +282,11 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     straightAt[i] = straight;
     // What the vertices' noise can do to the turning sine: both directions turn.
     const double noiseTurn = segmentNoise(before) / length[before] + segmentNoise(i) / length[i];
-    // The most the decimals' rounding can do to it (a bound, not a spread).
+    // The most the written digits' rounding can do to it (a bound, not a spread).
     const double roundingTurn = 2.0 * roundingReach * (1.0 / length[before] + 1.0 / length[i]);
     const bool significant = turn > NoiseSignificance * noiseTurn && turn > roundingTurn;
     // Straight within epsilon_1 by the rounding's chance is no straight run
-    // either; exactly straight is (a run along the decimals' lattice).
+    // either; exactly straight is (a run along the digits' lattice).
     const bool byChance = roundingTurn > tolerances.Data && turn > ExactlyStraight;
     shape.Collinear[i] = straight && !byChance && unit[before].dot(unit[i]) > 0;
     shape.Reversal[i] = straight && unit[before].dot(unit[i]) < 0;
