@@ -407,6 +407,14 @@ std::string DescribeFailures(const shapesplines::ShapeAudit& audit)
     text << (end - k > ShownPlaces ? ", ..." : "");
     k = end;
   }
+  // Straying spans count as violations too; a line failing only that way
+  // would otherwise be named with nothing after it.
+  if (audit.StrayingSpans > 0)
+  {
+    text << (audit.Where.empty() ? "" : "; ") << "straying from its data at "
+         << (audit.StrayingSpans > 1 ? std::to_string(audit.StrayingSpans) + " spans, the farthest " : "")
+         << "span " << audit.DeviationSpan;
+  }
   return text.str();
 }
 

@@ -586,6 +586,27 @@ TEST(AutomaticShapeFilters, ViolationsLeftAreNamedInOneWarning)
     << Joined(preserved.Warnings);
 }
 
+TEST(AutomaticShapeFilters, ALineLeftStrayingFromItsDataIsNamed)
+{
+  // Six points of a random walk, approximated: the least squares on the two
+  // knots cross-validation takes bulges 1.3 local segment lengths off L*,
+  // its one segment. That straying is the line's only violation, and the
+  // warning about what is left names it (it gave "Line (cell 0): ." before).
+  const Polyline walk = { { 0.504, 1.053, 1.037 }, { 1.642, 1.541, 1.286 },
+    { 1.420, 2.185, 0.836 }, { 0.591, 2.346, 1.506 }, { 1.664, 2.505, 2.810 },
+    { 1.615, 2.132, 0.938 } };
+  const auto data = PolylinesData({ walk });
+  const std::vector<std::string> named = { "1 line(s) keep shape violations",
+    "Line (cell 0): straying from its data at span 0." };
+  const FilterRun quintic = RunFilter<Quintic>(data, [](Quintic* f) { f->SetModeToApproximate(); });
+  EXPECT_EQ(CellArray(quintic.Output, "ShapeViolations")->GetTuple1(0), 1.0);
+  EXPECT_EQ(CountMessages(quintic.Warnings, named), 1) << Joined(quintic.Warnings);
+  const FilterRun variableDegree =
+    RunFilter<VariableDegree>(data, [](VariableDegree* f) { f->SetModeToApproximateGlobal(); });
+  EXPECT_EQ(CellArray(variableDegree.Output, "ShapeViolations")->GetTuple1(0), 1.0);
+  EXPECT_EQ(CountMessages(variableDegree.Warnings, named), 1) << Joined(variableDegree.Warnings);
+}
+
 TEST(AutomaticShapeFilters, ALineThatRunsStraightBackIsNamedNotBlamedOnTheFamily)
 {
   // A helix whose last points go back and forth between its last two (as a
