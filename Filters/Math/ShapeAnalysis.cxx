@@ -356,7 +356,9 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     const Vec3& b = unit[i];
     const Vec3& c = unit[next];
     const double triple = a.dot(b.cross(c));
-    const double crosses = a.cross(b).norm() * b.cross(c).norm();
+    const Vec3 ab = a.cross(b), bc = b.cross(c);
+    const double abNorm = ab.norm(), bcNorm = bc.norm();
+    const double crosses = abNorm * bcNorm;
     // Close points on a twisting curve have a tiny triple product (third
     // order in their spacing) while the planes at their ends turn by more
     // than the audit lets a curve's binormal turn (epsilon_2): such data are
@@ -369,15 +371,14 @@ DiscreteShape discreteShape(const CleanPolyline& data, const ShapeTolerances& to
     // What the vertices' noise can do to the triple product: each of the
     // three directions turns by about noise / length out of the others' plane.
     auto twistBy = [&](const auto& moved) {
-      return b.cross(c).norm() * moved(before) / length[before] +
-        (a.cross(b).norm() + b.cross(c).norm()) * moved(i) / length[i] +
-        a.cross(b).norm() * moved(next) / length[next];
+      return bcNorm * moved(before) / length[before] + (abNorm + bcNorm) * moved(i) / length[i] +
+        abNorm * moved(next) / length[next];
     };
     const double noiseTwist = twistBy(segmentNoise);
     // Rounding twists the segments by moving points out of their plane: by
     // up to half of each axis's step along the plane's normal (none out of a
     // plane z = 0 whose z are designed).
-    const Vec3 normal = (a.cross(b).norm() >= b.cross(c).norm() ? a.cross(b) : b.cross(c)).normalized();
+    const Vec3 normal = (abNorm >= bcNorm ? ab : bc).normalized();
     const double outOfPlane = 0.5 * normal.cwiseAbs().dot(roundingSteps);
     const double roundingTwist = twistBy([&](int) { return 2.0 * outOfPlane; });
     const bool significant =
